@@ -1,0 +1,66 @@
+// Tape format v1 (docs/tape-format.md): blocks <-> ISO 6983 word-address text <-> 8-bit
+// frames with ISO 840 even parity.
+// Idea: the first stage builds a Program of integer blocks (BLU, feed units) and writes it;
+// tests, the checker and reports read a tape back into the same Program. The software
+// reader enforces the same rules as the hardware decoder, so a tape it accepts plays.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncinterp::tape {
+
+enum class Motion : uint8_t { kLine = 1, kArcCw = 2, kArcCcw = 3 };  // G01, G02, G03
+
+struct Block {
+  uint32_t n = 0;               // sequence number
+  Motion motion = Motion::kLine;
+  int64_t dx = 0, dy = 0;       // incremental move, BLU
+  int64_t i = 0, j = 0;         // arc centre relative to the block's start, BLU
+  uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min
+};
+
+struct Format {
+  unsigned frac_digits = 3;       // BLU = 10^-frac_digits mm
+  unsigned feed_frac_digits = 3;  // fraction digits of F
+  unsigned inc_width = 16;        // |dx|,|dy|,|i|,|j| <= 2^inc_width - 1
+};
+
+struct Program {
+  std::vector<Block> blocks;  // motion blocks in tape order
+  bool end_m30 = false;       // end block is M30 (else M02)
+};
+
+// Where and why a tape is bad: the block's N (or the previous N when the bad block has
+// none yet) and the 0-based offset of the offending frame.
+struct TapeErrorInfo {
+  uint32_t block = 0;
+  uint64_t offset = 0;
+  std::string message;
+};
+
+class TapeFormatError : public std::runtime_error {
+ public:
+  explicit TapeFormatError(TapeErrorInfo info);
+  const TapeErrorInfo& info() const { return info_; }
+
+ private:
+  TapeErrorInfo info_;
+};
+
+// Program -> tape text ("%\n" setup block, motion blocks, M02, "%\n").
+std::string format_program(const Program& program, const Format& format);
+// Adds ISO 840 even parity in bit 7 of every 7-bit character.
+std::vector<uint8_t> add_parity(std::string_view text);
+// Frames -> Program; throws TapeFormatError on any rule the decoder enforces.
+Program parse_frames(const std::vector<uint8_t>& frames, const Format& format);
+// Reads a tape file: .tape files are frames as they are; any other file (.nc, .ngc, .txt)
+// is plain text and gets parity added. Throws std::runtime_error naming the file.
+std::vector<uint8_t> load_frames(const std::string& path);
+// Writes frames atomically (temporary file + rename): no half-written tape on failure.
+void write_tape_file(const std::string& path, const Program& program, const Format& format);
+
+}  // namespace ncinterp::tape
