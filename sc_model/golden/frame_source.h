@@ -1,0 +1,59 @@
+// Tape reader model: delivers a tape's frames to the interpolator over valid/ready at a
+// reader rate, one clock at a time. Plain C++ so the lock-step cosim and the SystemC
+// tape-reader module use the very same timing.
+// Idea: a start/stop reader needs `cycles_per_frame` clocks to bring the next character
+// under the read head; the character stays valid until the decoder takes it (valid and
+// ready at one rising edge). tape_end rises once the last frame has been taken.
+#pragma once
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "interp_ports.h"
+
+namespace ncinterp {
+
+class FrameSource {
+ public:
+  FrameSource(std::vector<uint8_t> frames, uint64_t cycles_per_frame)
+      : frames_(std::move(frames)),
+        cycles_per_frame_(cycles_per_frame ? cycles_per_frame : 1),
+        countdown_(cycles_per_frame_ - 1) {}
+
+  // Cycles per frame for a reader of `chars_per_second` at `clock_hz` (at least 1).
+  static uint64_t cycles_per_frame_for(double clock_hz, double chars_per_second) {
+    const double cycles = clock_hz / chars_per_second;
+    return cycles < 1.0 ? 1 : static_cast<uint64_t>(cycles + 0.5);
+  }
+
+  // The inputs the interpolator sees during the current clock.
+  InterpInputs inputs() const {
+    InterpInputs in;
+    in.frame_valid = next_ < frames_.size() && countdown_ == 0;
+    in.frame = in.frame_valid ? frames_[next_] : 0;
+    in.tape_end = next_ >= frames_.size();
+    return in;
+  }
+
+  // One rising edge; `ready` is the interpolator's frame_ready before that edge.
+  void clock(bool ready) {
+    if (next_ >= frames_.size()) return;
+    if (countdown_ > 0) {
+      --countdown_;
+    } else if (ready) {
+      ++next_;
+      countdown_ = cycles_per_frame_ - 1;
+    }
+  }
+
+  uint64_t frames_taken() const { return next_; }
+  const std::vector<uint8_t>& frames() const { return frames_; }
+
+ private:
+  std::vector<uint8_t> frames_;
+  uint64_t cycles_per_frame_;
+  uint64_t next_ = 0;      // index of the frame under the read head
+  uint64_t countdown_;     // clocks until that frame is readable
+};
+
+}  // namespace ncinterp
