@@ -1,0 +1,195 @@
+// The first stage pipeline (see firststage.h).
+#include "firststage.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "chords/chord_planner.h"
+#include "inputs/input_error.h"
+#include "offset/cutter_offset.h"
+#include "output/quadrant_arcs.h"
+
+namespace ncinterp::firststage {
+namespace {
+
+unsigned frac_digits_of(double blu_mm) {
+  for (unsigned k = 0; k <= 6; ++k)
+    if (std::fabs(blu_mm * std::pow(10.0, k) - 1.0) < 1e-9) return k;
+  throw std::invalid_argument("--blu must be 1, 0.1, 0.01, ... 0.000001 mm (the tape writes decimal digits)");
+}
+
+// Splits every line longer than the register into equal parts (rounded intermediate
+// points: at most half a BLU off the line in each axis).
+std::vector<Move> split_long_lines(GridPoint start, const std::vector<Move>& moves, int64_t max_inc) {
+  std::vector<Move> out;
+  out.reserve(moves.size());
+  GridPoint cur = start;
+  for (const Move& m : moves) {
+    const int64_t dx = m.to.x - cur.x, dy = m.to.y - cur.y;
+    const int64_t big = std::max(std::llabs(dx), std::llabs(dy));
+    if (m.kind == MoveKind::kLine && big > max_inc) {
+      const int64_t parts = (big + max_inc - 1) / max_inc;
+      for (int64_t k = 1; k < parts; ++k) {
+        Move piece = m;
+        piece.to = {cur.x + static_cast<int64_t>(std::llround(static_cast<double>(dx) * k / parts)),
+                    cur.y + static_cast<int64_t>(std::llround(static_cast<double>(dy) * k / parts))};
+        out.push_back(piece);
+      }
+    }
+    out.push_back(m);
+    cur = m.to;
+  }
+  return out;
+}
+
+}  // namespace
+
+tape::Format tape_format(const FirstStageOptions& options) {
+  tape::Format f;
+  f.frac_digits = frac_digits_of(options.blu_mm);
+  f.feed_frac_digits = 3;
+  f.inc_width = options.width;
+  return f;
+}
+
+void validate_options(const FirstStageOptions& o) {
+  if (o.method < 1 || o.method > 3) throw std::invalid_argument("--method must be 1, 2 or 3");
+  frac_digits_of(o.blu_mm);
+  if (o.width < 2 || o.width > 31) throw std::invalid_argument("--width must be 2..31 bits");
+  if (!(o.tol_mm > 0)) throw std::invalid_argument("--tol must be > 0");
+  if (!(o.feed_mm_min > 0)) throw std::invalid_argument("--feed must be > 0");
+  if (!(o.budget_blu >= 0)) throw std::invalid_argument("--budget must be >= 0");
+  if (!(o.cutter_radius_mm >= 0)) throw std::invalid_argument("--cutter-radius must be >= 0");
+  const double reserve = o.budget_blu + (o.cutter_radius_mm > 0 ? 1.0 : 0.0);
+  if (o.tol_mm / o.blu_mm - reserve < 1.0)
+    throw std::invalid_argument(
+        "--tol leaves less than 1 BLU for the chords after the interpolator's budget" +
+        std::string(o.cutter_radius_mm > 0 ? " and the offset rounding (1 BLU)" : "") +
+        ": raise --tol or use a finer --blu");
+}
+
+uint64_t inverse_time_feed(double length_mm, double feed_mm_min, unsigned feed_frac_digits) {
+  const double scale = std::pow(10.0, feed_frac_digits);
+  const double f = std::floor(feed_mm_min / length_mm * scale * (1.0 + 1e-15));
+  return f < 1.0 ? 1 : static_cast<uint64_t>(f);
+}
+
+double move_length_mm(GridPoint from, const Move& m, double blu_mm) {
+  const Vec2 a = to_vec(from), b = to_vec(m.to);
+  if (m.kind == MoveKind::kLine) return norm(b - a) * blu_mm;
+  const Vec2 c = to_vec(m.centre);
+  const Vec2 ra = a - c, rb = b - c;
+  double sweep = std::atan2(cross(ra, rb), dot(ra, rb));
+  if (m.kind == MoveKind::kArcCcw && sweep < 0) sweep += 2 * M_PI;
+  if (m.kind == MoveKind::kArcCw && sweep > 0) sweep -= 2 * M_PI;
+  if (sweep == 0.0 && norm(b - a) == 0.0) sweep = 2 * M_PI;
+  return 0.5 * (norm(ra) + norm(rb)) * std::fabs(sweep) * blu_mm;
+}
+
+FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions& o) {
+  validate_options(o);
+  const double to_blu = 1.0 / o.blu_mm;
+  const int64_t max_inc = (int64_t{1} << o.width) - 1;
+  FirstStageResult res;
+  res.frac_digits = static_cast<int>(frac_digits_of(o.blu_mm));
+  const bool offset = o.cutter_radius_mm > 0;
+  const double delta_blu = o.tol_mm * to_blu - o.budget_blu - (offset ? 1.0 : 0.0);
+  res.chord_delta_mm = delta_blu * o.blu_mm;
+  std::vector<Segment> segs;
+  segs.reserve(contour.segments.size());
+  for (const Segment& s : contour.segments) segs.push_back(s.scaled(to_blu));
+  res.chords_per_element.assign(contour.element_names.size(), 0);
+
+  PlannerOptions popt;
+  popt.method = o.method;
+  popt.delta = delta_blu;
+  popt.max_inc = max_inc;
+  ChordPlanner planner(popt);
+  res.start = round_to_grid(to_blu * contour.origin);
+  GridPoint cur = res.start;
+  std::vector<ChordEnd> ends;
+  const int n = static_cast<int>(segs.size());
+  for (int i = 0; i < n;) {
+    const Segment& first = segs[i];
+    const GridPoint target = round_to_grid(first.end());
+    if (first.rapid || first.kind() == SegmentKind::kLine) {
+      // Straight segments are their own chord (split to the register width later).
+      if (target != cur)
+        res.contour_moves.push_back({MoveKind::kLine, target, {}, first.source_index, false, first.rapid});
+      cur = target;
+      ++i;
+      continue;
+    }
+    if (o.arcs_circle && first.is_arc()) {
+      const bool fits = quadrant_arcs(first, cur, max_inc, delta_blu, first.source_index, res.contour_moves);
+      if (fits) {
+        cur = res.contour_moves.back().to;
+        ++i;
+        continue;
+      }
+      // Radius too wide for the I/J registers: this arc is chorded like any curve.
+    }
+    // A span: i and the following segments joined smoothly (unless zones or arc blocks).
+    int j = i + 1;
+    while (j < n && !o.zones && smooth_joint(segs[j - 1], segs[j]) &&
+           segs[j].kind() != SegmentKind::kLine && !(o.arcs_circle && segs[j].is_arc()))
+      ++j;
+    const Span span(&segs[i], j - i);
+    const GridPoint end = round_to_grid(segs[j - 1].end());
+    ends.clear();
+    try {
+      planner.plan(span, cur, end, ends);
+    } catch (const std::runtime_error& e) {
+      throw InputError(contour.file, first.source_line, e.what());
+    }
+    for (const ChordEnd& ce : ends) {
+      const int element = segs[i + ce.segment].source_index;
+      res.contour_moves.push_back({MoveKind::kLine, ce.p, {}, element, true, false});
+      ++res.chords_per_element[element];
+    }
+    cur = end;
+    i = j;
+  }
+  res.planner = planner.stats();
+  if (offset) {
+    CutterOffsetOptions oo;
+    oo.radius = o.cutter_radius_mm * to_blu;
+    oo.left = o.side_left;
+    try {
+      res.moves = offset_moves(res.start, res.contour_moves, oo, &res.start);
+    } catch (const std::runtime_error& e) {
+      throw InputError(contour.file, 0, e.what());
+    }
+  } else {
+    res.moves = res.contour_moves;
+  }
+  res.moves = split_long_lines(res.start, res.moves, max_inc);
+  return res;
+}
+
+tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o) {
+  tape::Program prog;
+  prog.blocks.reserve(r.moves.size());
+  GridPoint cur = r.start;
+  uint32_t n = 0;
+  for (const Move& m : r.moves) {
+    tape::Block b;
+    b.n = ++n;
+    b.motion = m.kind == MoveKind::kLine    ? tape::Motion::kLine
+               : m.kind == MoveKind::kArcCw ? tape::Motion::kArcCw
+                                            : tape::Motion::kArcCcw;
+    b.dx = m.to.x - cur.x;
+    b.dy = m.to.y - cur.y;
+    if (m.kind != MoveKind::kLine) {
+      b.i = m.centre.x - cur.x;
+      b.j = m.centre.y - cur.y;
+    }
+    b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), o.feed_mm_min, 3);
+    prog.blocks.push_back(b);
+    cur = m.to;
+  }
+  return prog;
+}
+
+}  // namespace ncinterp::firststage

@@ -1,0 +1,62 @@
+// The first stage, from a contour to tape blocks: spans -> chords within delta on the BLU
+// grid (or quadrant arcs) -> cutter-centre offset -> register-width split -> feed.
+// Idea: every position is an integer grid point from the start; a move is the difference
+// of two grid points, so the chain closes exactly on the programmed (rounded) end points.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "chords/chord_planner.h"
+#include "geometry/contour.h"
+#include "tape/tape.h"
+
+namespace ncinterp::firststage {
+
+struct FirstStageOptions {
+  int method = 3;              // 1 trial, 2 one-sided, 3 two-sided
+  double tol_mm = 0.01;        // delta: how far the pulse path may be from the contour
+  double blu_mm = 0.001;       // grid; must be 10^-k mm (k = tape fraction digits)
+  unsigned width = 16;         // increment register W: |dx|,|dy|,|i|,|j| <= 2^W - 1
+  bool arcs_circle = false;    // arcs as quadrant arc blocks instead of chords
+  double cutter_radius_mm = 0.0;  // 0: no offset (tape = contour)
+  bool side_left = true;       // cutter on the left of the direction of travel (G41)
+  double feed_mm_min = 1000.0;
+  bool zones = false;          // end chords at every joint (reference point), as the paper
+  double budget_blu = 1.0;     // interpolator's own error, reserved from delta
+};
+
+enum class MoveKind { kLine, kArcCw, kArcCcw };
+
+struct Move {
+  MoveKind kind = MoveKind::kLine;
+  GridPoint to;       // end, BLU (absolute)
+  GridPoint centre;   // arcs: centre, BLU (absolute)
+  int element = -1;   // input element the move belongs to (-1: added by the offset)
+  bool chord = false; // a chord of a curve (not a programmed line, arc or rapid)
+  bool rapid = false; // a G0 move: not cut, not offset
+};
+
+struct FirstStageResult {
+  GridPoint start;               // tape start, BLU (absolute)
+  std::vector<Move> moves;
+  // The contour's own path (before any cutter offset): chords and arcs, same start.
+  std::vector<Move> contour_moves;
+  std::vector<int> chords_per_element;
+  PlannerStats planner;
+  double chord_delta_mm = 0.0;   // the deviation the chords were held to (tol - budget ...)
+  int frac_digits = 3;
+};
+
+// Checks the options (throws std::invalid_argument with a one-line reason).
+void validate_options(const FirstStageOptions& options);
+FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions& options);
+// Moves -> tape program (G01/G02/G03 blocks with inverse-time F, N from 1).
+tape::Program make_program(const FirstStageResult& result, const FirstStageOptions& options);
+tape::Format tape_format(const FirstStageOptions& options);
+// Inverse-time feed in 10^-3 1/min for a move of `length_mm` at `feed_mm_min`: rounded
+// down (the block is never faster than the feed), at least 1 (0.001 1/min).
+uint64_t inverse_time_feed(double length_mm, double feed_mm_min, unsigned feed_frac_digits);
+// Length of a move in mm (arc length for arcs).
+double move_length_mm(GridPoint from, const Move& move, double blu_mm);
+
+}  // namespace ncinterp::firststage

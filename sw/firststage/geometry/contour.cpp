@@ -1,0 +1,25 @@
+// Joint classification for contours (see contour.h).
+#include "geometry/contour.h"
+
+#include <cmath>
+
+namespace ncinterp::firststage {
+
+bool Contour::closed() const {
+  if (segments.empty()) return false;
+  const Vec2 d = segments.back().end() - segments.front().start();
+  return norm(d) <= 1e-9 * (1.0 + norm(segments.front().start()));
+}
+
+double joint_turn(const Segment& a, const Segment& b) {
+  const Vec2 ta = a.eval(1.0).d1, tb = b.eval(0.0).d1;
+  if (norm(ta) == 0.0 || norm(tb) == 0.0) return M_PI;
+  return std::fabs(std::atan2(cross(ta, tb), dot(ta, tb)));
+}
+
+bool smooth_joint(const Segment& a, const Segment& b) {
+  if (a.rapid || b.rapid) return false;
+  return joint_turn(a, b) <= kSmoothJointAngle;
+}
+
+}  // namespace ncinterp::firststage

@@ -1,0 +1,34 @@
+// A part contour: one chain of segments, each starting where the one before ends, read
+// from any input kind (JSON, G-code, airfoil). Rapid moves (G0) are segments too, marked.
+// Idea: inputs only build this chain; the chord planner, the cutter offset and the reports
+// work on it without knowing where it came from.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "geometry/segment.h"
+
+namespace ncinterp::firststage {
+
+// Joints whose tangents turn by more than this are corners: always chord vertices.
+// (A smaller turn is taken as a smooth joint that a chord may cross; see docs/inputs.md.)
+constexpr double kSmoothJointAngle = 1e-3;  // rad
+
+struct Contour {
+  std::string file;                 // input file, for messages
+  Vec2 origin;                      // position before the first segment (mm)
+  std::vector<Segment> segments;    // mm
+  // One name per input element (source_index), e.g. "line 12 (G2)", "segment 3 (table)".
+  std::vector<std::string> element_names;
+  // Airfoil inputs: the trailing-edge points are corners, the rest of the spline is smooth.
+
+  Vec2 end() const { return segments.empty() ? origin : segments.back().end(); }
+  bool closed() const;
+};
+
+// Turn angle (rad, >= 0) of the tangent from the end of a to the start of b.
+double joint_turn(const Segment& a, const Segment& b);
+// True when a chord may cross the joint between a and b (no rapid, tangents agree).
+bool smooth_joint(const Segment& a, const Segment& b);
+
+}  // namespace ncinterp::firststage
