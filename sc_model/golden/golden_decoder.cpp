@@ -1,0 +1,215 @@
+// Tape decoder of the golden model; the rules are docs/interpolator.md section 3 and the
+// code follows rtl/tape_decoder.sv decision by decision (same priorities, same offsets).
+#include "golden_decoder.h"
+
+namespace ncinterp {
+
+namespace {
+
+uint64_t low_mask(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
+
+bool odd_parity(uint8_t frame) { return __builtin_parity(frame) != 0; }
+
+}  // namespace
+
+GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
+    : frac_digits_(cfg.frac_digits),
+      feed_frac_digits_(cfg.feed_frac_digits),
+      inc_limit_(low_mask(cfg.inc_width)),
+      feed_limit_(low_mask(cfg.feed_width)),
+      seq_limit_(low_mask(cfg.seq_width)),
+      offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))) {}
+
+void GoldenTapeDecoder::reset() {
+  state_ = State::kLeader;
+  frame_count_ = 0;
+  word_ = Word::kNone;
+  num_state_ = Num::kStart;
+  num_ = 0;
+  neg_ = false;
+  frac_count_ = 0;
+  word_offset_ = 0;
+  block_ = DecodedBlock{};
+  block_.motion = 1;
+  block_.feed = 0;
+  clear_block();
+  err_code_ = TapeError::kNone;
+  err_block_ = 0;
+  err_offset_ = 0;
+}
+
+void GoldenTapeDecoder::take_frame(uint8_t frame) {
+  const uint32_t offset = frame_count_;
+  frame_count_ = (frame_count_ + 1) & offset_mask_;
+  if (odd_parity(frame)) return fail(TapeError::kParity, offset);
+  const char c = static_cast<char>(frame & 0x7f);
+  switch (state_) {
+    case State::kLeader:
+      if (c == '%') state_ = State::kBody;
+      return;
+    case State::kComment:
+      if (c == ')') state_ = State::kBody;
+      return;
+    case State::kEnd:
+      if (!(c == '%' || c == '\0' || c == '\r' || c == '\n' || c == ' '))
+        fail(TapeError::kBlockAfterEnd, offset);
+      return;
+    case State::kBody:
+      return body_character(c, offset);
+    case State::kHold:
+    case State::kError:
+      return;  // not ready: the caller never hands a frame over in these states
+  }
+}
+
+void GoldenTapeDecoder::body_character(char c, uint32_t offset) {
+  if (c == ' ' || c == '\r') return;
+  if (c >= '0' && c <= '9') return digit(static_cast<unsigned>(c - '0'), offset);
+  if (c == '+' || c == '-') return sign(c == '-', offset);
+  if (c == '.') return dot(offset);
+  // Any other character ends the word being read; the word is checked first.
+  if (word_ != Word::kNone && !finish_word()) return;
+  switch (c) {
+    case 'N':
+      if (n_seen_) return fail(TapeError::kMissingEndOfBlock, offset);
+      n_seen_ = true;
+      return start_word(Word::kN, offset);
+    case 'G': return start_word(Word::kG, offset);
+    case 'M': return start_word(Word::kM, offset);
+    case 'X': return start_word(Word::kX, offset);
+    case 'Y': return start_word(Word::kY, offset);
+    case 'I': return start_word(Word::kI, offset);
+    case 'J': return start_word(Word::kJ, offset);
+    case 'F': return start_word(Word::kF, offset);
+    case '\n': return end_of_block(offset);
+    case '(': state_ = State::kComment; return;
+    case '%':
+      return fail(any_word_ ? TapeError::kMissingEndOfBlock : TapeError::kTruncatedTape,
+                  offset);
+    default: return fail(TapeError::kUnknownCharacter, offset);
+  }
+}
+
+uint64_t GoldenTapeDecoder::limit(Word w) const {
+  switch (w) {
+    case Word::kN: return seq_limit_;
+    case Word::kG:
+    case Word::kM: return 99;
+    case Word::kF: return feed_limit_;
+    default: return inc_limit_;
+  }
+}
+
+unsigned GoldenTapeDecoder::fraction_digits(Word w) const {
+  return w == Word::kF ? feed_frac_digits_ : frac_digits_;
+}
+
+void GoldenTapeDecoder::digit(unsigned d, uint32_t offset) {
+  if (word_ == Word::kNone) return fail(TapeError::kMalformedNumber, offset);
+  const bool in_fraction = num_state_ == Num::kFrac;
+  if (in_fraction && frac_count_ == fraction_digits(word_))
+    return fail(TapeError::kMalformedNumber, offset);
+  const uint64_t value = num_ * 10 + d;
+  if (value > limit(word_)) return fail(TapeError::kValueTooWide, offset);
+  num_ = value;
+  if (in_fraction)
+    ++frac_count_;
+  else
+    num_state_ = Num::kInt;
+}
+
+void GoldenTapeDecoder::sign(bool negative, uint32_t offset) {
+  const bool signed_word =
+      word_ == Word::kX || word_ == Word::kY || word_ == Word::kI || word_ == Word::kJ;
+  if (!signed_word || num_state_ != Num::kStart)
+    return fail(TapeError::kMalformedNumber, offset);
+  neg_ = negative;
+  num_state_ = Num::kSigned;
+}
+
+void GoldenTapeDecoder::dot(uint32_t offset) {
+  const bool fractional = word_ == Word::kX || word_ == Word::kY || word_ == Word::kI ||
+                          word_ == Word::kJ || word_ == Word::kF;
+  if (!fractional || num_state_ != Num::kInt) return fail(TapeError::kMalformedNumber, offset);
+  num_state_ = Num::kFrac;
+}
+
+void GoldenTapeDecoder::start_word(Word w, uint32_t offset) {
+  any_word_ = true;
+  word_ = w;
+  num_state_ = Num::kStart;
+  num_ = 0;
+  neg_ = false;
+  frac_count_ = 0;
+  word_offset_ = offset;
+}
+
+// Checks the word just ended and commits its value; false after raising an error.
+bool GoldenTapeDecoder::finish_word() {
+  const Word w = word_;
+  word_ = Word::kNone;
+  const bool fractional = w != Word::kN && w != Word::kG && w != Word::kM;
+  const bool complete = fractional ? num_state_ == Num::kFrac && frac_count_ == fraction_digits(w)
+                                   : num_state_ == Num::kInt;
+  if (!complete) {
+    fail(TapeError::kMalformedNumber, word_offset_);
+    return false;
+  }
+  const uint32_t value32 = static_cast<uint32_t>(num_);
+  switch (w) {
+    case Word::kN: block_.n = value32; break;
+    case Word::kG:
+      if (num_ == 1) {
+        block_.motion = 1;
+        motion_block_ = true;
+      } else if (!(num_ == 17 || num_ == 21 || num_ == 91 || num_ == 93)) {
+        fail(TapeError::kUnsupportedCode, word_offset_);  // G02/G03 too, until circle mode
+        return false;
+      }
+      break;
+    case Word::kM:
+      if (num_ != 2 && num_ != 30) {
+        fail(TapeError::kUnsupportedCode, word_offset_);
+        return false;
+      }
+      end_block_ = true;
+      break;
+    case Word::kX: block_.dx = value32; block_.dx_neg = neg_; motion_block_ = true; break;
+    case Word::kY: block_.dy = value32; block_.dy_neg = neg_; motion_block_ = true; break;
+    case Word::kI: block_.i = value32; block_.i_neg = neg_; motion_block_ = true; break;
+    case Word::kJ: block_.j = value32; block_.j_neg = neg_; motion_block_ = true; break;
+    case Word::kF: block_.feed = num_; break;
+    case Word::kNone: break;
+  }
+  return true;
+}
+
+void GoldenTapeDecoder::end_of_block(uint32_t offset) {
+  if (motion_block_) {
+    if (block_.feed == 0) return fail(TapeError::kMissingFeed, offset);
+    state_ = State::kHold;  // the block buffer takes it; cleared at the handoff
+    return;
+  }
+  if (end_block_) state_ = State::kEnd;
+  clear_block();
+}
+
+void GoldenTapeDecoder::handoff() {
+  state_ = end_block_ ? State::kEnd : State::kBody;
+  clear_block();
+}
+
+void GoldenTapeDecoder::clear_block() {
+  n_seen_ = any_word_ = motion_block_ = end_block_ = false;
+  block_.dx = block_.dy = block_.i = block_.j = 0;
+  block_.dx_neg = block_.dy_neg = block_.i_neg = block_.j_neg = false;
+}
+
+void GoldenTapeDecoder::fail(TapeError code, uint32_t offset) {
+  err_code_ = code;
+  err_block_ = block_.n;
+  err_offset_ = offset;
+  state_ = State::kError;
+}
+
+}  // namespace ncinterp

@@ -1,0 +1,89 @@
+// Tape decoder of the golden model: the C++ twin of rtl/tape_decoder.sv.
+// Idea: frames -> words -> one decoded motion block at a time, with the same registers and
+// the same next-state rules as the RTL (docs/interpolator.md, section 3). It is called only
+// on clocks where something happens (a frame is taken, the tape has ended, the block
+// buffer takes the held block), so it stays off the golden model's hot path.
+#pragma once
+#include <cstdint>
+
+#include "interp_ports.h"
+
+namespace ncinterp {
+
+// A decoded motion block as it moves from the decoder through the block buffer to the
+// player. Magnitudes and signs, as on tape; motion 1/2/3 = G01/G02/G03.
+struct DecodedBlock {
+  uint32_t n = 0;
+  uint8_t motion = 1;
+  uint32_t dx = 0, dy = 0, i = 0, j = 0;
+  bool dx_neg = false, dy_neg = false, i_neg = false, j_neg = false;
+  uint64_t feed = 0;
+};
+
+class GoldenTapeDecoder {
+ public:
+  // Order matters: the states up to kComment watch tape_end (truncated tape).
+  enum class State : uint8_t { kLeader, kBody, kComment, kHold, kEnd, kError };
+
+  explicit GoldenTapeDecoder(const InterpConfig& cfg);
+
+  void reset();
+  // One frame taken (valid & ready at this edge).
+  void take_frame(uint8_t frame);
+  // An edge with no frame taken while tape_end is high.
+  void tape_ended() {
+    if (state_ <= State::kComment)
+      fail(TapeError::kTruncatedTape, frame_count_);
+  }
+  // The block buffer takes the held block at this edge (state is kHold).
+  void handoff();
+
+  State state() const { return state_; }
+  bool ready() const {
+    return state_ != State::kHold && state_ != State::kError;
+  }
+  const DecodedBlock& block() const { return block_; }
+  TapeError error_code() const { return err_code_; }
+  uint32_t error_block() const { return err_block_; }
+  uint32_t error_offset() const { return err_offset_; }
+
+ private:
+  enum class Word : uint8_t { kNone, kN, kG, kM, kX, kY, kI, kJ, kF };
+  enum class Num : uint8_t { kStart, kSigned, kInt, kFrac };
+
+  void body_character(char c, uint32_t offset);
+  void digit(unsigned d, uint32_t offset);
+  void sign(bool negative, uint32_t offset);
+  void dot(uint32_t offset);
+  void start_word(Word w, uint32_t offset);
+  bool finish_word();
+  void end_of_block(uint32_t offset);
+  void clear_block();
+  void fail(TapeError code, uint32_t offset);
+  uint64_t limit(Word w) const;
+  unsigned fraction_digits(Word w) const;
+
+  // Parameters.
+  unsigned frac_digits_, feed_frac_digits_;
+  uint64_t inc_limit_, feed_limit_, seq_limit_;
+  uint32_t offset_mask_;
+
+  State state_ = State::kLeader;
+  uint32_t frame_count_ = 0;  // offset of the next frame
+  // Word being read.
+  Word word_ = Word::kNone;
+  Num num_state_ = Num::kStart;
+  uint64_t num_ = 0;
+  bool neg_ = false;
+  unsigned frac_count_ = 0;
+  uint32_t word_offset_ = 0;
+  // Block assembly (n, motion and feed are modal: never cleared at a block start).
+  DecodedBlock block_;
+  bool n_seen_ = false, any_word_ = false, motion_block_ = false, end_block_ = false;
+  // Error capture.
+  TapeError err_code_ = TapeError::kNone;
+  uint32_t err_block_ = 0;
+  uint32_t err_offset_ = 0;
+};
+
+}  // namespace ncinterp

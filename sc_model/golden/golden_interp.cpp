@@ -1,0 +1,169 @@
+// Golden cycle model: the cold paths of GoldenInterp (block load, decoder and buffer
+// activity, status, fault hook). The hot path, tick(), is inline in golden_interp.h.
+#include "golden_interp.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace ncinterp {
+
+namespace {
+
+uint64_t low_mask(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
+
+unsigned bit_length(uint32_t x) { return x == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(x)); }
+
+void require(bool ok, const char* what) {
+  if (!ok) throw std::invalid_argument(std::string("GoldenInterp: unsupported parameter: ") + what);
+}
+
+}  // namespace
+
+GoldenInterp::GoldenInterp(const InterpConfig& cfg) : cfg_(cfg), decoder_(cfg) {
+  require(cfg.inc_width >= 1 && cfg.inc_width <= 30, "inc_width must be 1..30");
+  require(cfg.feed_width >= 1 && cfg.feed_width + cfg.inc_width <= 62,
+          "feed_width + inc_width must be <= 62");
+  require(cfg.modulus_width >= 1 && cfg.modulus_width <= 62, "modulus_width must be 1..62");
+  require(cfg.pos_width >= 2 && cfg.pos_width <= 63, "pos_width must be 2..63");
+  require(cfg.seq_width >= 1 && cfg.seq_width <= 32, "seq_width must be 1..32");
+  require(cfg.offset_width >= 1 && cfg.offset_width <= 32, "offset_width must be 1..32");
+  require(cfg.frac_digits <= 9 && cfg.feed_frac_digits <= 9, "fraction digits must be <= 9");
+  modulus_ = cfg.feed_modulus & low_mask(cfg.modulus_width);
+  pos_mask_ = low_mask(cfg.pos_width);
+  pos_sign_ = 1ull << (cfg.pos_width - 1);
+  reset();
+}
+
+void GoldenInterp::reset() {
+  decoder_.reset();
+  next_ = DecodedBlock{};
+  next_valid_ = false;
+  feed_step_ = phase_ = 0;
+  saturated_ = false;
+  kpow_ = rem_ = 0;
+  acc_[0] = acc_[1] = inc_[0] = inc_[1] = 0;
+  dir_[0] = dir_[1] = false;
+  out_ = InterpOutputs{};
+  out_.frame_ready = decoder_.ready();
+  cycle_ = 0;
+  loads_ = 0;
+  fault_active_ = false;
+  fault_cycle_ = fault_.kind == Fault::kNone ? std::numeric_limits<uint64_t>::max() : fault_.cycle;
+}
+
+void GoldenInterp::load_block() {
+  const DecodedBlock& b = next_;
+  const unsigned k = bit_length(b.dx | b.dy);
+  kpow_ = 1u << k;
+  rem_ = kpow_;
+  acc_[0] = acc_[1] = kpow_ >> 1;
+  inc_[0] = b.dx;
+  inc_[1] = b.dy;
+  dir_[0] = !b.dx_neg;
+  dir_[1] = !b.dy_neg;
+  feed_step_ = b.feed << k;
+  phase_ = feed_step_;
+  saturated_ = feed_step_ >= modulus_;
+  next_valid_ = false;
+  out_.dir_x = dir_[0];
+  out_.dir_y = dir_[1];
+  out_.block_n = b.n;
+  out_.busy = true;
+  out_.feed_saturated = saturated_;
+  ++loads_;
+}
+
+void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {
+  using State = GoldenTapeDecoder::State;
+  if (in.frame_valid && decoder_.ready()) {
+    decoder_.take_frame(in.frame);
+  } else if (decoder_.state() == State::kHold) {
+    if (buffer_empty) {
+      next_ = decoder_.block();
+      next_valid_ = true;
+      decoder_.handoff();
+    }
+  } else if (in.tape_end) {
+    decoder_.tape_ended();
+  }
+  out_.frame_ready = decoder_.ready();
+}
+
+void GoldenInterp::status_edge(bool tape_end) {
+  using State = GoldenTapeDecoder::State;
+  if (decoder_.state() == State::kError && !out_.error) {
+    out_.error = true;
+    out_.error_code = static_cast<uint8_t>(decoder_.error_code());
+    out_.error_block = decoder_.error_block();
+    out_.error_offset = decoder_.error_offset();
+  } else if (decoder_.state() == State::kEnd && tape_end) {
+    out_.done = true;
+  }
+}
+
+void GoldenInterp::inject(const Fault& fault) {
+  fault_ = fault;
+  fault_active_ = false;
+  fault_cycle_ = fault.kind == Fault::kNone ? std::numeric_limits<uint64_t>::max()
+                                            : (fault.cycle > cycle_ ? fault.cycle : cycle_ + 1);
+}
+
+void GoldenInterp::fault_edge() {
+  const int a = fault_.axis == 0 ? 0 : 1;
+  bool& step = a == 0 ? out_.step_x : out_.step_y;
+  bool& dir_out = a == 0 ? out_.dir_x : out_.dir_y;
+  int64_t& pos = a == 0 ? out_.pos_x : out_.pos_y;
+  const int64_t unit = dir_[a] ? 1 : -1;  // the direction the normal tick counted in
+  bool again = true;                      // re-arm for the next cycle
+  if (fault_active_ && (loads_ != fault_block_ || !out_.busy)) {
+    // The faulty block has ended: the outputs of this edge are already the normal ones,
+    // except a dir output inverted by the fault, which the new/idle state restores.
+    if (fault_.kind == Fault::kWrongDirection && loads_ == fault_block_) dir_out = dir_[a];
+    fault_active_ = false;
+    again = false;
+  } else {
+    switch (fault_.kind) {
+      case Fault::kNone: again = false; break;
+      case Fault::kLostPulse:
+        if (step) {
+          step = false;
+          pos = wrap_position(pos - unit);
+          again = false;
+        }
+        break;
+      case Fault::kStuckStep:
+        if (!out_.busy) break;  // waits for a block
+        if (!fault_active_) {
+          fault_active_ = true;
+          fault_block_ = loads_;
+        }
+        if (!step) {
+          step = true;
+          pos = wrap_position(pos + unit);
+        }
+        break;
+      case Fault::kAccumulatorOffByOne:
+        if (!out_.busy) break;
+        acc_[a] += 1;
+        again = false;
+        break;
+      case Fault::kWrongDirection:
+        if (!out_.busy) break;
+        if (!fault_active_) {
+          fault_active_ = true;
+          fault_block_ = loads_;
+        }
+        dir_out = !dir_[a];
+        if (step) pos = wrap_position(pos - 2 * unit);
+        break;
+    }
+  }
+  if (again) {
+    fault_cycle_ = cycle_ + 1;
+  } else {
+    fault_cycle_ = std::numeric_limits<uint64_t>::max();
+    fault_.kind = Fault::kNone;
+  }
+}
+
+}  // namespace ncinterp

@@ -1,0 +1,131 @@
+// Golden cycle model of the interpolator: the C++ twin of rtl/interp_top.sv.
+// Idea: one tick() is one rising clock edge. Every register of the RTL exists here with the
+// same reset value and next-state rule (docs/interpolator.md), so after each tick the
+// outputs equal the RTL's outputs after the same edge; the cosim checks this every clock.
+// The model must be fast (>= 100 M cycles/s): the hot path is inline, a clock with no frame
+// and no DDA iteration only advances the feed phase; the output struct is the output
+// registers themselves; the fault hook costs one compare per tick.
+#pragma once
+#include <cstdint>
+#include <limits>
+
+#include "golden_decoder.h"
+#include "interp_ports.h"
+
+namespace ncinterp {
+
+class GoldenInterp {
+ public:
+  // Test hook: one fault at a time, injected into the golden model only, so the lock-step
+  // scoreboard (and the system monitors) can be shown to catch it. Semantics in
+  // docs/interpolator.md section 9; cycle 1 is the first tick after reset().
+  struct Fault {
+    enum Kind { kNone, kLostPulse, kStuckStep, kAccumulatorOffByOne, kWrongDirection };
+    Kind kind = kNone;
+    uint64_t cycle = 0;
+    int axis = 0;  // 0 = X, 1 = Y
+  };
+
+  explicit GoldenInterp(const InterpConfig& cfg);
+
+  // State after an edge with rst_ni = 0; clears the cycle counter (not an injected fault).
+  void reset();
+
+  // One rising clock edge with these inputs.
+  inline void tick(const InterpInputs& in);
+
+  const InterpOutputs& outputs() const { return out_; }
+  const InterpConfig& config() const { return cfg_; }
+  uint64_t cycle() const { return cycle_; }
+
+  void inject(const Fault& fault);
+
+ private:
+  void load_block();           // block buffer -> player
+  void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
+  void status_edge(bool tape_end);          // done / error when the player is empty
+  void fault_edge();           // the injected fault acts at this cycle
+  int64_t wrap_position(int64_t p) const {
+    const uint64_t u = static_cast<uint64_t>(p) & pos_mask_;
+    return static_cast<int64_t>((u ^ pos_sign_) - pos_sign_);  // sign-extend
+  }
+
+  InterpConfig cfg_;
+  uint64_t modulus_;   // feed_modulus_i, ModulusWidth bits
+  uint64_t pos_mask_, pos_sign_;
+
+  GoldenTapeDecoder decoder_;
+  // Block buffer ("next" register).
+  DecodedBlock next_;
+  bool next_valid_ = false;
+  // Player: feed generator and line DDA.
+  uint64_t feed_step_ = 0;  // F << k
+  uint64_t phase_ = 0;
+  bool saturated_ = false;
+  uint32_t kpow_ = 0;       // 2^k, one-hot
+  uint32_t rem_ = 0;        // DDA iterations left in the block
+  uint32_t acc_[2] = {0, 0};
+  uint32_t inc_[2] = {0, 0};
+  bool dir_[2] = {false, false};
+  // Outputs: the output registers themselves.
+  InterpOutputs out_;
+
+  uint64_t cycle_ = 0;
+  uint64_t loads_ = 0;  // blocks loaded since reset (the fault hook's notion of "block")
+  // Fault hook: fault_edge() runs when cycle_ == fault_cycle_; an active fault re-arms it
+  // for the next cycle.
+  Fault fault_;
+  uint64_t fault_cycle_ = std::numeric_limits<uint64_t>::max();
+  bool fault_active_ = false;
+  uint64_t fault_block_ = 0;
+};
+
+inline void GoldenInterp::tick(const InterpInputs& in) {
+  ++cycle_;
+  // Every decision below reads the registers as they were before this edge (the _q
+  // values): they are taken first, then the player, the buffer and the decoder update.
+  using State = GoldenTapeDecoder::State;
+  const bool busy = out_.busy;
+  const bool finishing = busy && rem_ == 0;
+  const bool buffer_empty = !next_valid_;
+  const State dstate = decoder_.state();
+  if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
+    status_edge(in.tape_end);
+  const bool load = !buffer_empty && (!busy || finishing);
+
+  out_.step_x = false;
+  out_.step_y = false;
+  if (busy && !finishing) {
+    // Feed generator: one DDA iteration per strobe.
+    bool strobe = saturated_;
+    if (!strobe) {
+      const uint64_t p = phase_ + feed_step_;
+      strobe = p >= modulus_;
+      phase_ = strobe ? p - modulus_ : p;
+    }
+    if (strobe) {
+      --rem_;
+      for (int a = 0; a < 2; ++a) {
+        const uint32_t sum = acc_[a] + inc_[a];
+        const bool carry = (sum & kpow_) != 0;
+        acc_[a] = sum & ~kpow_;
+        if (carry) {
+          int64_t& pos = a == 0 ? out_.pos_x : out_.pos_y;
+          pos = wrap_position(pos + (dir_[a] ? 1 : -1));
+          (a == 0 ? out_.step_x : out_.step_y) = true;
+        }
+      }
+    }
+  } else if (finishing && !load) {
+    out_.busy = false;
+    out_.feed_saturated = false;
+  }
+  if (load) load_block();
+  // Decoder and buffer input: a frame taken, a held block handed over, or the tape ended.
+  if ((in.frame_valid && decoder_.ready()) || dstate == State::kHold ||
+      (in.tape_end && dstate <= State::kComment))
+    frame_edge(in, buffer_empty);
+  if (cycle_ == fault_cycle_) fault_edge();
+}
+
+}  // namespace ncinterp

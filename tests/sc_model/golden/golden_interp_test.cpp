@@ -1,0 +1,446 @@
+// Unit tests of the golden cycle model against the timing and rules of
+// docs/interpolator.md: handshake, block latency, feed timing, DDA pulses, gaps, errors,
+// fault hook, and random line tapes checked against the programmed increments.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "golden_interp.h"
+#include "interp_test_support.h"
+
+namespace ncinterp {
+namespace {
+
+using test::check_line_program;
+using test::frames_of;
+using test::LineBlock;
+using test::OutputRecorder;
+
+constexpr uint64_t kMaxCycles = 50'000'000;
+
+uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
+
+unsigned bit_length(uint64_t x) {
+  unsigned k = 0;
+  while (x >> k) ++k;
+  return k;
+}
+
+TEST(GoldenInterp, OutputsAfterResetAreIdle) {
+  GoldenInterp dut(InterpConfig{});
+  InterpOutputs expected;
+  expected.frame_ready = true;
+  EXPECT_EQ(dut.outputs(), expected);
+  EXPECT_EQ(dut.cycle(), 0u);
+}
+
+TEST(GoldenInterp, RejectsWidthsItCannotModel) {
+  InterpConfig cfg;
+  cfg.inc_width = 31;
+  EXPECT_THROW(GoldenInterp{cfg}, std::invalid_argument);
+}
+
+// One block, not saturated: pulses come exactly at the iterations the phase accumulator
+// and the integrators dictate (docs 5.2/5.3), and the block takes ceil(M/F) clocks.
+TEST(GoldenInterp, SingleBlockPulseTimesFollowTheFeedAndDdaFormulas) {
+  const InterpConfig cfg = test::config_for_clock(1e6);
+  const std::vector<LineBlock> prog = {{1, 1000, -500, 600000}};
+  GoldenInterp dut(cfg);
+  OutputRecorder rec;
+  const InterpOutputs out = run_golden(dut, frames_of(test::line_tape_text(prog)), 1, kMaxCycles, rec);
+  ASSERT_TRUE(out.done);
+  ASSERT_TRUE(check_line_program(prog, rec));
+  ASSERT_EQ(rec.starts.size(), 1u);
+  const uint64_t load = rec.starts[0].cycle;
+  const uint64_t m = cfg.feed_modulus, f = 600000;
+  const unsigned k = bit_length(1000 | 500);
+  const uint64_t kpow = 1ull << k, s = f << k;
+  ASSERT_LT(s, m);
+  EXPECT_EQ(rec.busy_cycles, ceil_div(m, f));  // 100000 clocks = 1/600 min at 1 MHz
+  std::vector<OutputRecorder::Pulse> expected;
+  for (uint64_t j = 1; j <= kpow; ++j) {
+    const uint64_t cycle = load + ceil_div(j * m, s) - 1;
+    for (int a = 0; a < 2; ++a) {
+      const uint64_t d = a == 0 ? 1000 : 500;
+      if ((kpow / 2 + j * d) / kpow != (kpow / 2 + (j - 1) * d) / kpow)
+        expected.push_back({cycle, 1, a, a == 0, 0, 0});
+    }
+  }
+  ASSERT_EQ(rec.pulses.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(rec.pulses[i].cycle, expected[i].cycle) << "pulse " << i;
+    EXPECT_EQ(rec.pulses[i].axis, expected[i].axis) << "pulse " << i;
+  }
+}
+
+TEST(GoldenInterp, BlockDurationRoundsTheProgrammedTimeUp) {
+  InterpConfig cfg;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(1000.0, 3);  // 1 kHz clock: M = 6e7
+  for (uint64_t f : {7000ull, 12345ull, 59999ull}) {
+    const std::vector<LineBlock> prog = {{5, 3, 2, f}};
+    GoldenInterp dut(cfg);
+    OutputRecorder rec;
+    ASSERT_TRUE(run_golden(dut, frames_of(test::line_tape_text(prog)), 1, kMaxCycles, rec).done);
+    EXPECT_EQ(rec.busy_cycles, ceil_div(cfg.feed_modulus, f)) << "F" << f;
+    EXPECT_FALSE(rec.starts.at(0).saturated);
+    EXPECT_TRUE(check_line_program(prog, rec));
+  }
+}
+
+TEST(GoldenInterp, SaturatedBlockTakesTwoToTheKPlusOneClocksAndSaysSo) {
+  const InterpConfig cfg = test::config_for_clock(1e6);
+  const std::vector<LineBlock> prog = {{7, 1000, 300, 4000000000ull}};  // F << 10 >= M
+  GoldenInterp dut(cfg);
+  OutputRecorder rec;
+  ASSERT_TRUE(run_golden(dut, frames_of(test::line_tape_text(prog)), 1, kMaxCycles, rec).done);
+  EXPECT_EQ(rec.busy_cycles, 1025u);
+  EXPECT_TRUE(rec.starts.at(0).saturated);
+  EXPECT_FALSE(rec.last.feed_saturated);  // only while the block plays
+  EXPECT_TRUE(check_line_program(prog, rec));
+}
+
+TEST(GoldenInterp, ZeroMoveIsADwellOfOneOverF) {
+  InterpConfig cfg;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(1000.0, 3);
+  const std::vector<LineBlock> prog = {{1, 0, 0, 60000}};  // 1/60 min at 1 kHz = 1000 clocks
+  GoldenInterp dut(cfg);
+  OutputRecorder rec;
+  ASSERT_TRUE(run_golden(dut, frames_of(test::line_tape_text(prog)), 1, kMaxCycles, rec).done);
+  EXPECT_EQ(rec.busy_cycles, 1000u);
+  EXPECT_TRUE(rec.pulses.empty());
+}
+
+// Handshake and latency (docs 3.1, 3.3, 4): one frame per clock, ready low for one clock
+// after the LF of a motion block, block loaded two edges after its LF.
+TEST(GoldenInterp, HandshakeAndBlockLatency) {
+  const std::string text = "%\nN1 G01 X0.002 F100.000\nM02\n%\n";
+  const size_t lf = text.find('\n', text.find("N1"));
+  GoldenInterp dut(test::config_for_clock(1e6));
+  FrameSource source(frames_of(text), 1);
+  std::vector<bool> ready{dut.outputs().frame_ready}, busy{false};
+  std::vector<uint64_t> taken{0};
+  while (!dut.outputs().done && dut.cycle() < kMaxCycles) {
+    const bool r = dut.outputs().frame_ready;
+    dut.tick(source.inputs());
+    source.clock(r);
+    ready.push_back(dut.outputs().frame_ready);
+    busy.push_back(dut.outputs().busy);
+    taken.push_back(source.frames_taken());
+  }
+  ASSERT_TRUE(dut.outputs().done);
+  // Frame i is taken at edge i + 1 up to the LF, which is taken at edge lf + 1.
+  for (size_t i = 0; i <= lf; ++i) EXPECT_EQ(taken[i + 1], i + 1);
+  EXPECT_FALSE(ready[lf + 1]);
+  EXPECT_TRUE(ready[lf + 2]);
+  EXPECT_FALSE(busy[lf + 2]);
+  EXPECT_TRUE(busy[lf + 3]);  // LF at edge e, buffer at e+1, load at e+2
+  EXPECT_EQ(taken[lf + 3], lf + 2);  // the next frame waited one clock
+}
+
+TEST(GoldenInterp, BlocksFollowWithoutGapsWhenTheReaderIsFast) {
+  InterpConfig cfg;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(1000.0, 3);
+  const std::vector<LineBlock> prog = {{1, 5, 1, 6000}, {2, -3, 4, 7000}, {3, 0, -9, 8000}};
+  GoldenInterp dut(cfg);
+  OutputRecorder rec;
+  ASSERT_TRUE(run_golden(dut, frames_of(test::line_tape_text(prog)), 1, kMaxCycles, rec).done);
+  ASSERT_EQ(rec.starts.size(), 3u);
+  EXPECT_EQ(rec.starts[1].cycle - rec.starts[0].cycle, ceil_div(cfg.feed_modulus, 6000));
+  EXPECT_EQ(rec.starts[2].cycle - rec.starts[1].cycle, ceil_div(cfg.feed_modulus, 7000));
+  EXPECT_EQ(rec.busy_cycles, rec.cycles - rec.starts[0].cycle - 1);  // busy until the end
+  EXPECT_TRUE(check_line_program(prog, rec));
+}
+
+TEST(GoldenInterp, SlowReaderLeavesObservableGaps) {
+  InterpConfig cfg;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(1000.0, 3);
+  const std::vector<LineBlock> prog = {{1, 4, 1, 600000000}, {2, 3, -4, 600000000}};
+  const std::string text = test::line_tape_text(prog);
+  const size_t lf2 = text.find('\n', text.find("N2"));
+  GoldenInterp dut(cfg);
+  FrameSource source(frames_of(text), 50);
+  OutputRecorder rec;
+  uint64_t lf2_taken = 0, gap = 0;
+  while (!dut.outputs().done && dut.cycle() < kMaxCycles) {
+    const bool r = dut.outputs().frame_ready;
+    dut.tick(source.inputs());
+    source.clock(r);
+    if (source.frames_taken() == lf2 + 1 && lf2_taken == 0) lf2_taken = dut.cycle();
+    rec.observe(dut.cycle(), dut.outputs());
+    if (rec.starts.size() == 1 && !dut.outputs().busy) ++gap;
+  }
+  ASSERT_EQ(rec.starts.size(), 2u);
+  EXPECT_GT(gap, 0u);
+  EXPECT_EQ(rec.starts[1].cycle, lf2_taken + 2);
+  EXPECT_TRUE(check_line_program(prog, rec));
+}
+
+TEST(GoldenInterp, BlockWithoutNCarriesThePreviousN) {
+  const std::string text = "%\nN7 G01 X0.001 F1000.000\nY0.002\nM02\n%\n";
+  GoldenInterp dut(test::config_for_clock(1e3));
+  OutputRecorder rec;
+  ASSERT_TRUE(run_golden(dut, frames_of(text), 1, kMaxCycles, rec).done);
+  ASSERT_EQ(rec.pulses.size(), 3u);
+  for (const auto& p : rec.pulses) EXPECT_EQ(p.block, 7u);
+  EXPECT_EQ(rec.last.pos_x, 1);
+  EXPECT_EQ(rec.last.pos_y, 2);
+}
+
+TEST(GoldenInterp, LeaderCommentsSpacesAndSignsAreAccepted) {
+  const std::string text =
+      std::string("\0\0\0", 3) + "%\r\n(setup)\nG17 G21 G91 G93 (xy mm incremental)\n"
+      "N1 G1 X+0.003 Y-0.00 2 F1000.000\nN2 X-0.000\nM30\n%\n\0\0";
+  GoldenInterp dut(test::config_for_clock(1e3));
+  OutputRecorder rec;
+  const InterpOutputs out = run_golden(dut, frames_of(text), 1, kMaxCycles, rec);
+  ASSERT_TRUE(out.done) << "error " << int(out.error_code) << " at " << out.error_offset;
+  EXPECT_TRUE(check_line_program({{1, 3, -2, 1000000}, {2, 0, 0, 1000000}}, rec));
+}
+
+// Bad tapes: the error names the bad block (its own N if read, else the previous one) and
+// the offending frame; the good blocks before it play completely; nothing of the bad one.
+struct BadTape {
+  const char* name;
+  std::string text;
+  TapeError code;
+  uint32_t block;
+  size_t offset;
+  std::vector<LineBlock> good;
+};
+
+void PrintTo(const BadTape& t, std::ostream* os) { *os << t.name; }
+
+std::vector<BadTape> bad_tapes() {
+  const std::string head = "%\nG17 G21 G91 G93\nN10 G01 X0.005 Y-0.003 F100000.000\n";
+  const std::vector<LineBlock> good = {{10, 5, -3, 100000000}};
+  std::vector<BadTape> t;
+  auto at = [&](const std::string& text, const std::string& what, size_t from = 0) {
+    return text.find(what, from);
+  };
+  std::string s;
+  s = head + "N20 G01 X0.007 Y0.002\nM02\n%\n";
+  t.push_back({"parity", s, TapeError::kParity, 20, at(s, "7 Y"), good});
+  s = head + "N20 G01 Q0.007\nM02\n%\n";
+  t.push_back({"unknown_letter", s, TapeError::kUnknownCharacter, 20, at(s, "Q"), good});
+  s = head + "N20 G01 X65.536\nM02\n%\n";
+  t.push_back({"too_wide", s, TapeError::kValueTooWide, 20, at(s, "536") + 2, good});
+  s = head + "N20 G01 X0.001 N30 G01 X0.002\nM02\n%\n";
+  t.push_back({"missing_eob", s, TapeError::kMissingEndOfBlock, 20, at(s, "N30"), good});
+  s = head + "N20 G01 X0.0";
+  t.push_back({"truncated", s, TapeError::kTruncatedTape, 20, s.size(), good});
+  s = head + "M02\nN30 X0.001\n%\n";
+  t.push_back({"after_end", s, TapeError::kBlockAfterEnd, 10, at(s, "N30"), good});
+  s = head + "N20 G01 X1.00 Y0.000\nM02\n%\n";
+  t.push_back({"short_fraction", s, TapeError::kMalformedNumber, 20, at(s, "X1.00"), good});
+  s = head + "N20 G01 X1.0000\nM02\n%\n";
+  t.push_back({"long_fraction", s, TapeError::kMalformedNumber, 20, at(s, "0000", at(s, "N20")) + 3, good});
+  s = head + "N20 G01 X12\nM02\n%\n";
+  t.push_back({"no_point", s, TapeError::kMalformedNumber, 20, at(s, "X12"), good});
+  s = head + "N20 G01 X1-.000\nM02\n%\n";
+  t.push_back({"late_sign", s, TapeError::kMalformedNumber, 20, at(s, "-."), good});
+  s = head + "N20 G90 X1.000\nM02\n%\n";
+  t.push_back({"g90", s, TapeError::kUnsupportedCode, 20, at(s, "G90"), good});
+  s = head + "N20 G02 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
+  t.push_back({"g02_until_circle_mode", s, TapeError::kUnsupportedCode, 20, at(s, "G02"), good});
+  s = head + "N20 M00\nM02\n%\n";
+  t.push_back({"m00", s, TapeError::kUnsupportedCode, 20, at(s, "M00"), good});
+  s = head + "N1048576 X0.001\nM02\n%\n";
+  t.push_back({"n_too_wide", s, TapeError::kValueTooWide, 10, at(s, "1048576") + 6, good});
+  s = head + "N20 X0.001 F4294967.296\nM02\n%\n";
+  t.push_back({"f_too_wide", s, TapeError::kValueTooWide, 20, at(s, "4294967.296") + 10, good});
+  s = head + "N20 X0.001 %\n";
+  t.push_back({"percent_in_block", s, TapeError::kMissingEndOfBlock, 20, at(s, "%", 3), good});
+  s = head + "%\n";
+  t.push_back({"percent_before_end", s, TapeError::kTruncatedTape, 10, at(s, "%", 3), good});
+  s = "%\nG17 G21 G91 G93\nN10 G01 X0.005\nM02\n%\n";
+  t.push_back({"missing_feed", s, TapeError::kMissingFeed, 10, at(s, "\n", at(s, "N10")), {}});
+  s = head + "N20 X0.001 F0.000\nM02\n%\n";
+  t.push_back({"feed_zero", s, TapeError::kMissingFeed, 20, at(s, "\n", at(s, "N20")), good});
+  s = head + "N20 x0.001\nM02\n%\n";
+  t.push_back({"lower_case", s, TapeError::kUnknownCharacter, 20, at(s, "x"), good});
+  s = head + "N20 (spaces do not end a number, a comment does)5\nM02\n%\n";
+  t.push_back({"digit_without_letter", s, TapeError::kMalformedNumber, 20, at(s, ")5") + 1, good});
+  s = std::string("") + "";
+  t.push_back({"empty_tape", s, TapeError::kTruncatedTape, 0, 0, {}});
+  s = std::string("\0\0\0", 3) + "no program here";
+  t.push_back({"no_start", s, TapeError::kTruncatedTape, 0, s.size(), {}});
+  s = head + "N20 (never closed\nM02\n%\n";
+  t.push_back({"open_comment", s, TapeError::kTruncatedTape, 20, s.size(), good});
+  return t;
+}
+
+class GoldenBadTape : public ::testing::TestWithParam<BadTape> {};
+
+TEST_P(GoldenBadTape, StopsAtTheBlockBoundaryWithBlockAndOffset) {
+  const BadTape& bad = GetParam();
+  std::vector<uint8_t> frames = frames_of(bad.text);
+  if (bad.code == TapeError::kParity) frames[bad.offset] ^= 0x80;
+  GoldenInterp dut(test::config_for_clock(1e3));
+  OutputRecorder rec;
+  const InterpOutputs out = run_golden(dut, frames, 1, kMaxCycles, rec);
+  ASSERT_TRUE(out.error);
+  EXPECT_FALSE(out.done);
+  EXPECT_EQ(out.error_code, static_cast<uint8_t>(bad.code));
+  EXPECT_EQ(out.error_block, bad.block);
+  EXPECT_EQ(out.error_offset, bad.offset);
+  EXPECT_FALSE(out.frame_ready);
+  EXPECT_FALSE(out.busy);
+  EXPECT_TRUE(check_line_program(bad.good, rec));
+}
+
+INSTANTIATE_TEST_SUITE_P(Tapes, GoldenBadTape, ::testing::ValuesIn(bad_tapes()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(GoldenInterp, ErrorRisesTwoClocksAfterTheLastGoodBlockFinishes) {
+  // The bad block is found while N10 plays (fast reader, slow block).
+  const std::string text = "%\nN10 G01 X0.004 F60000.000\nN20 Q\n";
+  GoldenInterp dut(test::config_for_clock(1e3));
+  OutputRecorder rec;
+  uint64_t last_busy = 0, error_cycle = 0;
+  FrameSource source(frames_of(text), 1);
+  while (!dut.outputs().error && dut.cycle() < kMaxCycles) {
+    const bool r = dut.outputs().frame_ready;
+    dut.tick(source.inputs());
+    source.clock(r);
+    if (dut.outputs().busy) last_busy = dut.cycle();
+    if (dut.outputs().error) error_cycle = dut.cycle();
+    EXPECT_EQ(dut.outputs().error_code, dut.outputs().error ? 2 : 0);
+  }
+  EXPECT_EQ(error_cycle, last_busy + 2);
+  EXPECT_EQ(dut.outputs().pos_x, 4);
+}
+
+// Fault hook (docs section 9).
+struct FaultRun {
+  OutputRecorder rec;
+  std::vector<InterpOutputs> outs;
+};
+
+FaultRun run_with_fault(const std::string& text, const GoldenInterp::Fault& fault) {
+  GoldenInterp dut(test::config_for_clock(1e3));
+  dut.inject(fault);
+  FaultRun run;
+  FrameSource source(frames_of(text), 1);
+  run.outs.push_back(dut.outputs());
+  while (!dut.outputs().done && !dut.outputs().error && dut.cycle() < kMaxCycles) {
+    const bool r = dut.outputs().frame_ready;
+    dut.tick(source.inputs());
+    source.clock(r);
+    run.outs.push_back(dut.outputs());
+    run.rec.observe(dut.cycle(), dut.outputs());
+  }
+  return run;
+}
+
+const std::string kFaultTape = "%\nN1 G01 X0.010 Y0.004 F1000.000\nN2 X0.003 Y-0.001\nM02\n%\n";
+
+size_t first_difference(const FaultRun& a, const FaultRun& b) {
+  for (size_t i = 0; i < a.outs.size() && i < b.outs.size(); ++i)
+    if (a.outs[i] != b.outs[i]) return i;
+  return std::min(a.outs.size(), b.outs.size());
+}
+
+TEST(GoldenFault, LostPulseSuppressesTheFirstPulseAtOrAfterTheCycle) {
+  const FaultRun clean = run_with_fault(kFaultTape, {});
+  uint64_t second_x = 0;
+  int seen = 0;
+  for (const auto& p : clean.rec.pulses)
+    if (p.axis == 0 && ++seen == 2) second_x = p.cycle;
+  const FaultRun faulty =
+      run_with_fault(kFaultTape, {GoldenInterp::Fault::kLostPulse, second_x - 3, 0});
+  EXPECT_EQ(first_difference(clean, faulty), second_x);
+  EXPECT_FALSE(faulty.outs[second_x].step_x);
+  EXPECT_EQ(faulty.rec.last.pos_x, clean.rec.last.pos_x - 1);
+  EXPECT_EQ(faulty.rec.last.pos_y, clean.rec.last.pos_y);
+}
+
+TEST(GoldenFault, StuckStepHoldsTheStepForTheRestOfTheBlock) {
+  const FaultRun clean = run_with_fault(kFaultTape, {});
+  const uint64_t start1 = clean.rec.starts.at(0).cycle, start2 = clean.rec.starts.at(1).cycle;
+  const uint64_t c = start1 + 5;
+  const FaultRun faulty = run_with_fault(kFaultTape, {GoldenInterp::Fault::kStuckStep, c, 1});
+  for (uint64_t i = c; i < start2; ++i) EXPECT_TRUE(faulty.outs[i].step_y) << i;
+  EXPECT_FALSE(faulty.outs[start2].step_y && !clean.outs[start2].step_y);
+  EXPECT_EQ(first_difference(clean, faulty), c);
+  // The position counts what the step output shows.
+  EXPECT_EQ(faulty.outs[start2 - 1].pos_y, static_cast<int64_t>(start2 - c) +
+                                               clean.outs[c - 1].pos_y);
+}
+
+TEST(GoldenFault, AccumulatorOffByOneAddsAPulseToAOneStepMove) {
+  const std::string text = "%\nN1 G01 X0.001 F1000.000\nM02\n%\n";  // k = 1: acc 1, inc 1
+  const FaultRun clean = run_with_fault(text, {});
+  const uint64_t start = clean.rec.starts.at(0).cycle;
+  const FaultRun faulty =
+      run_with_fault(text, {GoldenInterp::Fault::kAccumulatorOffByOne, start, 0});
+  EXPECT_EQ(clean.rec.last.pos_x, 1);
+  EXPECT_EQ(faulty.rec.last.pos_x, 2);
+  EXPECT_GT(first_difference(clean, faulty), start);
+}
+
+TEST(GoldenFault, WrongDirectionInvertsDirAndCountsBackwardsForTheBlock) {
+  const FaultRun clean = run_with_fault(kFaultTape, {});
+  const uint64_t start2 = clean.rec.starts.at(1).cycle;
+  const uint64_t c = clean.rec.starts.at(0).cycle + 1;
+  const FaultRun faulty =
+      run_with_fault(kFaultTape, {GoldenInterp::Fault::kWrongDirection, c, 0});
+  EXPECT_EQ(first_difference(clean, faulty), c);
+  for (uint64_t i = c; i < start2; ++i) EXPECT_FALSE(faulty.outs[i].dir_x) << i;
+  EXPECT_TRUE(faulty.outs[start2].dir_x);  // the next block is normal again
+  EXPECT_EQ(faulty.rec.last.pos_x, -10 + 3);
+}
+
+TEST(GoldenFault, FaultBeforeAnyBlockWaitsForABlock) {
+  const FaultRun clean = run_with_fault(kFaultTape, {});
+  const FaultRun faulty = run_with_fault(kFaultTape, {GoldenInterp::Fault::kWrongDirection, 1, 1});
+  EXPECT_EQ(first_difference(clean, faulty), clean.rec.starts.at(0).cycle);
+}
+
+// Random line tapes: both signs, zero moves, moves of 2^W - 1, one and many blocks.
+// Feeds make each block last 1 .. 4 * 2^k + 8 clocks: a mix of saturated and
+// phase-accumulated blocks that keeps the runs short.
+std::vector<LineBlock> random_program(std::mt19937_64& rng, unsigned inc_width,
+                                      uint64_t modulus) {
+  const int64_t max = (int64_t{1} << inc_width) - 1;
+  std::uniform_int_distribution<int> nblocks(1, 8), kind(0, 9);
+  std::vector<LineBlock> prog;
+  const int n = nblocks(rng);
+  for (int i = 0; i < n; ++i) {
+    auto value = [&]() -> int64_t {
+      switch (kind(rng)) {
+        case 0: return 0;
+        case 1: return max;
+        case 2: return -max;
+        case 3: case 4: return std::uniform_int_distribution<int64_t>(-max, max)(rng);
+        default: return std::uniform_int_distribution<int64_t>(-300, 300)(rng);
+      }
+    };
+    LineBlock b{static_cast<uint32_t>(10 * (i + 1)), value(), value(), 0};
+    const uint64_t kpow = 1ull << bit_length(static_cast<uint64_t>(std::abs(b.dx) | std::abs(b.dy)));
+    const uint64_t clocks = std::uniform_int_distribution<uint64_t>(1, 4 * kpow + 8)(rng);
+    b.feed = std::min<uint64_t>(ceil_div(modulus, clocks), 0xffffffffull);
+    prog.push_back(b);
+  }
+  return prog;
+}
+
+TEST(GoldenRandom, LineTapesPlayExactlyWithinTheBound) {
+  std::mt19937_64 rng(20240601);
+  for (int t = 0; t < 100; ++t) {
+    const InterpConfig cfg = test::config_for_clock(1e3);
+    const std::vector<LineBlock> prog = random_program(rng, 16, cfg.feed_modulus);
+    GoldenInterp dut(cfg);
+    OutputRecorder rec;
+    const InterpOutputs out =
+        run_golden(dut, frames_of(test::line_tape_text(prog)), 1, kMaxCycles, rec);
+    ASSERT_TRUE(out.done) << "tape " << t;
+    ASSERT_TRUE(check_line_program(prog, rec)) << "tape " << t;
+  }
+}
+
+}  // namespace
+}  // namespace ncinterp

@@ -1,0 +1,73 @@
+// Test support shared by the golden-model and cosim tests: line tapes, a recorder of the
+// interpolator's outputs and the checks every run must pass.
+// Idea: the checks are derived from the programmed blocks (the math of the tape), never
+// from either engine: pulses per axis and direction equal the increments, every pulse
+// happens while block_n shows its block, and every pulse position is within the L1 bound
+// (|dx|+|dy|) / (2 sqrt(dx^2+dy^2)) of the block's chord.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "frame_source.h"
+#include "golden_interp.h"
+#include "interp_ports.h"
+
+namespace ncinterp::test {
+
+// One motion block of a line tape; dx, dy in BLU, feed in 10^-feed_frac_digits 1/min.
+struct LineBlock {
+  uint32_t n = 0;
+  int64_t dx = 0, dy = 0;
+  uint64_t feed = 0;
+};
+
+// Tape text: "%", setup block, the line blocks, M02, "%".
+std::string line_tape_text(const std::vector<LineBlock>& blocks, unsigned frac_digits = 3,
+                           unsigned feed_frac_digits = 3);
+// Frames of a tape text with ISO 840 even parity in bit 7.
+std::vector<uint8_t> frames_of(std::string_view text);
+
+// Records what the interpolator's outputs show, cycle by cycle.
+class OutputRecorder {
+ public:
+  struct Pulse {
+    uint64_t cycle;
+    uint32_t block;
+    int axis;  // 0 = X, 1 = Y
+    bool plus;
+    int64_t x, y;  // position after the clock
+  };
+  struct Start {
+    uint64_t cycle;
+    uint32_t block;
+    bool saturated;
+  };
+  void observe(uint64_t cycle, const InterpOutputs& o);
+
+  std::vector<Pulse> pulses;
+  std::vector<Start> starts;  // busy rising, or block_n changing while busy
+  uint64_t busy_cycles = 0;
+  uint64_t cycles = 0;
+  InterpOutputs last;
+
+ private:
+  bool was_busy_ = false;
+};
+
+// Checks a run of a line program that played completely (or up to an error: pass the
+// blocks before the bad one). Block numbers must be unique.
+::testing::AssertionResult check_line_program(const std::vector<LineBlock>& blocks,
+                                              const OutputRecorder& rec);
+
+// Runs the golden model on frames until done, error or max_cycles; records every clock.
+InterpOutputs run_golden(GoldenInterp& dut, const std::vector<uint8_t>& frames,
+                         uint64_t cycles_per_frame, uint64_t max_cycles, OutputRecorder& rec);
+
+// Config with the given clock (feed modulus) and default widths.
+InterpConfig config_for_clock(double clock_hz);
+
+}  // namespace ncinterp::test
