@@ -1,0 +1,74 @@
+// Feed generator: inverse-time feed (G93) as a phase accumulator of DDA iteration strobes.
+//
+// What: a block of 2^k DDA iterations must take 1/F minutes. Every clock the phase grows
+// by S = F << k and is compared with the modulus M = 60 * f_clk * 10^FeedFracDigits;
+// reaching M issues one iteration strobe and subtracts M. So 2^k iterations take M/F
+// clocks, rounded up (docs/interpolator.md 5.2). If S >= M the block wants more than one
+// iteration per clock: it is saturated and runs one iteration every clock instead.
+// Timing: at the load edge step_q = phase_q = S (the load clock counts as the first add)
+// and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
+// registers and acts in the same edge as the DDA iteration it triggers.
+module feed_generator #(
+  parameter int unsigned FeedWidth    = 32,
+  parameter int unsigned IncWidth     = 16,
+  parameter int unsigned ModulusWidth = 48,
+  parameter int unsigned KWidth       = $clog2(IncWidth + 1)
+) (
+  input  logic                    clk_i,
+  input  logic                    rst_ni,
+  input  logic                    load_i,     // a block loads at this edge
+  input  logic [FeedWidth-1:0]    feed_i,     // its F
+  input  logic [KWidth-1:0]       k_i,        // its k
+  input  logic                    run_i,      // the playing block has iterations left
+  input  logic [ModulusWidth-1:0] modulus_i,  // feed_modulus_i (static)
+  output logic                    strobe_o,   // one DDA iteration at this edge
+  output logic                    saturated_o
+);
+
+  // phase + S < 2M when not saturated, and S itself needs FeedWidth + IncWidth bits.
+  localparam int unsigned SumWidth   = FeedWidth + IncWidth > ModulusWidth ? FeedWidth + IncWidth
+                                                                           : ModulusWidth;
+  localparam int unsigned PhaseWidth = SumWidth + 1;
+
+  // step_q: S = F << k of the playing block. phase_q: accumulated feed, always < M when
+  // not saturated. saturated_q: S >= M, one iteration per clock.
+  logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
+  logic                  saturated_q, saturated_d;
+
+  logic [PhaseWidth-1:0] step_load, sum, modulus;
+  logic                  reached;
+
+  always_comb begin
+    modulus   = PhaseWidth'(modulus_i);
+    step_load = PhaseWidth'(feed_i) << k_i;
+    sum       = phase_q + step_q;
+    reached   = sum >= modulus;
+    strobe_o  = run_i & (saturated_q | reached);
+
+    step_d      = step_q;
+    phase_d     = phase_q;
+    saturated_d = saturated_q;
+    if (load_i) begin
+      step_d      = step_load;
+      phase_d     = step_load;
+      saturated_d = step_load >= modulus;
+    end else if (run_i && !saturated_q) begin
+      phase_d = reached ? sum - modulus : sum;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      step_q      <= '0;
+      phase_q     <= '0;
+      saturated_q <= 1'b0;
+    end else begin
+      step_q      <= step_d;
+      phase_q     <= phase_d;
+      saturated_q <= saturated_d;
+    end
+  end
+
+  assign saturated_o = saturated_q;
+
+endmodule

@@ -1,0 +1,463 @@
+// Tape decoder: 8-bit frames (ISO 840 even parity) -> word-address blocks (ISO 6983).
+//
+// What: takes one frame per clock over valid/ready, checks its parity, parses the words
+// N G M X Y I J F (strict number syntax, docs/interpolator.md section 3), assembles one
+// motion block and holds it (frame_ready_o low) until the block buffer takes it. G and F
+// are modal. The first bad frame stops the decoder with an error code, the bad block's N
+// (or the previous one) and the frame's offset; the error is only reported by interp_top
+// once every good block has played.
+//
+// Timing: a frame taken at edge e (frame_valid_i & frame_ready_o) is fully processed at e.
+// The LF of a motion block puts the decoder in HOLD from e; the block buffer takes the
+// block at the first edge where it is empty (blk_ready_i), after which frame_ready_o is
+// high again. tape_end_i with no frame taken in LEADER/BODY/COMMENT is a truncated tape.
+// All outputs are functions of registers.
+module tape_decoder #(
+  // Increment register width W: |X|, |Y|, |I|, |J| <= 2^IncWidth - 1 BLU.
+  parameter int unsigned IncWidth       = 16,
+  // Fraction digits of X, Y, I, J on tape (exactly this many).
+  parameter int unsigned FracDigits     = 3,
+  // F register width and fraction digits.
+  parameter int unsigned FeedWidth      = 32,
+  parameter int unsigned FeedFracDigits = 3,
+  // N register width.
+  parameter int unsigned SeqWidth       = 20,
+  // Frame offset counter width (error reports).
+  parameter int unsigned OffsetWidth    = 32
+) (
+  input  logic                   clk_i,
+  input  logic                   rst_ni,
+  // Tape reader.
+  input  logic [7:0]             frame_i,
+  input  logic                   frame_valid_i,
+  input  logic                   tape_end_i,
+  output logic                   frame_ready_o,
+  // The decoded motion block, valid while held; taken at an edge with blk_ready_i.
+  output logic                   blk_valid_o,
+  input  logic                   blk_ready_i,
+  output logic [SeqWidth-1:0]    blk_n_o,
+  output logic [1:0]             blk_motion_o,
+  output logic [IncWidth-1:0]    blk_dx_o,
+  output logic                   blk_dx_neg_o,
+  output logic [IncWidth-1:0]    blk_dy_o,
+  output logic                   blk_dy_neg_o,
+  output logic [IncWidth-1:0]    blk_i_o,
+  output logic                   blk_i_neg_o,
+  output logic [IncWidth-1:0]    blk_j_o,
+  output logic                   blk_j_neg_o,
+  output logic [FeedWidth-1:0]   blk_feed_o,
+  // End of program decoded and its last block handed over; trailing frames are checked.
+  output logic                   end_o,
+  // An error is held (the decoder has stopped).
+  output logic                   err_o,
+  output logic [3:0]             err_code_o,
+  output logic [SeqWidth-1:0]    err_block_o,
+  output logic [OffsetWidth-1:0] err_offset_o
+);
+
+  // The number accumulator holds any word's value; a digit is checked against the word's
+  // limit in NumWidth + 4 bits (num * 10 + 9 cannot overflow that).
+  localparam int unsigned NumWidth0 = IncWidth > FeedWidth ? IncWidth : FeedWidth;
+  localparam int unsigned NumWidth1 = NumWidth0 > SeqWidth ? NumWidth0 : SeqWidth;
+  localparam int unsigned NumWidth  = NumWidth1 > 7 ? NumWidth1 : 7;
+  localparam int unsigned WideWidth = NumWidth + 4;
+
+  localparam logic [WideWidth-1:0] IncLimit  = {{(WideWidth - IncWidth){1'b0}}, {IncWidth{1'b1}}};
+  localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
+  localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
+  localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
+  localparam logic [3:0] FracCount     = 4'(FracDigits);
+  localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
+
+  // Error codes (docs/architecture.md).
+  localparam logic [3:0] ErrParity      = 4'd1;
+  localparam logic [3:0] ErrUnknownChar = 4'd2;
+  localparam logic [3:0] ErrMalformed   = 4'd3;
+  localparam logic [3:0] ErrTooWide     = 4'd4;
+  localparam logic [3:0] ErrMissingEob  = 4'd5;
+  localparam logic [3:0] ErrUnsupported = 4'd6;
+  localparam logic [3:0] ErrTruncated   = 4'd7;
+  localparam logic [3:0] ErrAfterEnd    = 4'd8;
+  localparam logic [3:0] ErrMissingFeed = 4'd9;
+
+  // ISO 646 characters.
+  localparam logic [6:0] ChNul     = 7'h00;
+  localparam logic [6:0] ChLf      = 7'h0a;
+  localparam logic [6:0] ChCr      = 7'h0d;
+  localparam logic [6:0] ChSpace   = 7'h20;
+  localparam logic [6:0] ChPercent = 7'h25;
+  localparam logic [6:0] ChOpen    = 7'h28;
+  localparam logic [6:0] ChClose   = 7'h29;
+  localparam logic [6:0] ChPlus    = 7'h2b;
+  localparam logic [6:0] ChMinus   = 7'h2d;
+  localparam logic [6:0] ChDot     = 7'h2e;
+  localparam logic [6:0] ChZero    = 7'h30;
+  localparam logic [6:0] ChNine    = 7'h39;
+  localparam logic [6:0] ChF       = 7'h46;
+  localparam logic [6:0] ChG       = 7'h47;
+  localparam logic [6:0] ChI       = 7'h49;
+  localparam logic [6:0] ChJ       = 7'h4a;
+  localparam logic [6:0] ChM       = 7'h4d;
+  localparam logic [6:0] ChN       = 7'h4e;
+  localparam logic [6:0] ChX       = 7'h58;
+  localparam logic [6:0] ChY       = 7'h59;
+
+  typedef enum logic [2:0] {
+    StLeader  = 3'd0,  // before '%': frames skipped
+    StBody    = 3'd1,  // reading blocks
+    StComment = 3'd2,  // inside ( ... )
+    StHold    = 3'd3,  // a decoded motion block waits for the block buffer
+    StEnd     = 3'd4,  // after the end block: only % NUL CR LF space
+    StError   = 3'd5   // stopped on an error
+  } state_e;
+
+  typedef enum logic [3:0] {
+    WordNone = 4'd0, WordN = 4'd1, WordG = 4'd2, WordM = 4'd3, WordX = 4'd4,
+    WordY = 4'd5, WordI = 4'd6, WordJ = 4'd7, WordF = 4'd8
+  } word_e;
+
+  typedef enum logic [1:0] {
+    NumStart  = 2'd0,  // right after the letter: a sign or a digit may come
+    NumSigned = 2'd1,  // after the sign: a digit must come
+    NumInt    = 2'd2,  // integer digits
+    NumFrac   = 2'd3   // after '.': fraction digits
+  } num_e;
+
+  state_e state_q, state_d;
+  // Offset of the next frame: the offset reported for an error in the frame being taken.
+  logic [OffsetWidth-1:0] frame_count_q, frame_count_d;
+
+  // The word being read: its letter, number syntax state, magnitude, sign, the count of
+  // fraction digits read and the offset of its letter (for errors found at the word's end).
+  word_e                  word_q, word_d;
+  num_e                   num_state_q, num_state_d;
+  logic [NumWidth-1:0]    num_q, num_d;
+  logic                   neg_q, neg_d;
+  logic [3:0]             frac_count_q, frac_count_d;
+  logic [OffsetWidth-1:0] word_offset_q, word_offset_d;
+
+  // Block assembly. n_q is the last N read (never cleared: a block without N carries the
+  // previous one); motion_q and feed_q are modal (G01 and "no feed" after reset).
+  logic [SeqWidth-1:0]  n_q, n_d;
+  logic [1:0]           motion_q, motion_d;
+  logic [FeedWidth-1:0] feed_q, feed_d;
+  logic [IncWidth-1:0]  dx_q, dx_d, dy_q, dy_d, i_q, i_d, j_q, j_d;
+  logic                 dx_neg_q, dx_neg_d, dy_neg_q, dy_neg_d;
+  logic                 i_neg_q, i_neg_d, j_neg_q, j_neg_d;
+  // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
+  // a motion G); the block ends the program (M02/M30).
+  logic n_seen_q, n_seen_d, any_word_q, any_word_d;
+  logic motion_blk_q, motion_blk_d, end_blk_q, end_blk_d;
+
+  // The error found (valid in StError).
+  logic [3:0]             err_code_q, err_code_d;
+  logic [SeqWidth-1:0]    err_block_q, err_block_d;
+  logic [OffsetWidth-1:0] err_offset_q, err_offset_d;
+
+  // Combinational helpers.
+  logic                   take;         // a frame is taken at this edge
+  logic [6:0]             ch;           // its character
+  logic                   fail;         // an error is found at this edge
+  logic [3:0]             fail_code;
+  logic [OffsetWidth-1:0] fail_offset;
+  logic                   word_ok;      // the word ended by this frame was committed
+  logic                   signed_word, fractional_word, word_complete;
+  logic [3:0]             frac_limit;
+  logic [WideWidth-1:0]   limit, num_next;
+
+  assign take = frame_valid_i & frame_ready_o;
+  assign ch   = frame_i[6:0];
+
+  // Properties of the word being read.
+  always_comb begin
+    signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
+    fractional_word = signed_word || word_q == WordF;
+    frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
+    unique case (word_q)
+      WordN:        limit = SeqLimit;
+      WordG, WordM: limit = CodeLimit;
+      WordF:        limit = FeedLimit;
+      default:      limit = IncLimit;
+    endcase
+    word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
+                                    : (num_state_q == NumInt);
+    num_next = {num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(ch[3:0]);  // num*10 + digit
+  end
+
+  always_comb begin
+    state_d       = state_q;
+    frame_count_d = frame_count_q;
+    word_d        = word_q;
+    num_state_d   = num_state_q;
+    num_d         = num_q;
+    neg_d         = neg_q;
+    frac_count_d  = frac_count_q;
+    word_offset_d = word_offset_q;
+    n_d           = n_q;
+    motion_d      = motion_q;
+    feed_d        = feed_q;
+    dx_d = dx_q;  dx_neg_d = dx_neg_q;
+    dy_d = dy_q;  dy_neg_d = dy_neg_q;
+    i_d  = i_q;   i_neg_d  = i_neg_q;
+    j_d  = j_q;   j_neg_d  = j_neg_q;
+    n_seen_d      = n_seen_q;
+    any_word_d    = any_word_q;
+    motion_blk_d  = motion_blk_q;
+    end_blk_d     = end_blk_q;
+    err_code_d    = err_code_q;
+    err_block_d   = err_block_q;
+    err_offset_d  = err_offset_q;
+    fail          = 1'b0;
+    fail_code     = ErrParity;
+    fail_offset   = frame_count_q;
+    word_ok       = 1'b1;
+
+    if (take) begin
+      frame_count_d = frame_count_q + 1'b1;
+      if (^frame_i) begin
+        fail = 1'b1;  // odd parity
+      end else begin
+        unique case (state_q)
+          StLeader:  if (ch == ChPercent) state_d = StBody;
+          StComment: if (ch == ChClose) state_d = StBody;
+          StEnd: begin
+            if (!(ch == ChPercent || ch == ChNul || ch == ChCr || ch == ChLf || ch == ChSpace)) begin
+              fail = 1'b1;
+              fail_code = ErrAfterEnd;
+            end
+          end
+          StBody: begin
+            if (ch == ChSpace || ch == ChCr) begin
+              // ignored everywhere, even inside a number
+            end else if (ch >= ChZero && ch <= ChNine) begin
+              if (word_q == WordNone) begin
+                fail = 1'b1;
+                fail_code = ErrMalformed;
+              end else if (num_state_q == NumFrac && frac_count_q == frac_limit) begin
+                fail = 1'b1;
+                fail_code = ErrMalformed;  // one fraction digit too many
+              end else if (num_next > limit) begin
+                fail = 1'b1;
+                fail_code = ErrTooWide;
+              end else begin
+                num_d = num_next[NumWidth-1:0];
+                if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
+                else num_state_d = NumInt;
+              end
+            end else if (ch == ChPlus || ch == ChMinus) begin
+              if (!signed_word || num_state_q != NumStart) begin
+                fail = 1'b1;
+                fail_code = ErrMalformed;
+              end else begin
+                neg_d = ch == ChMinus;
+                num_state_d = NumSigned;
+              end
+            end else if (ch == ChDot) begin
+              if (!fractional_word || num_state_q != NumInt) begin
+                fail = 1'b1;
+                fail_code = ErrMalformed;
+              end else begin
+                num_state_d = NumFrac;
+              end
+            end else begin
+              // Any other character ends the word being read: check and commit it first.
+              if (word_q != WordNone) begin
+                word_d = WordNone;
+                if (!word_complete) begin
+                  word_ok = 1'b0;
+                  fail_code = ErrMalformed;
+                end else begin
+                  unique case (word_q)
+                    WordN: n_d = num_q[SeqWidth-1:0];
+                    WordG: begin
+                      if (num_q == NumWidth'(1)) begin
+                        motion_d = 2'd1;
+                        motion_blk_d = 1'b1;
+                      end else if (!(num_q == NumWidth'(17) || num_q == NumWidth'(21) ||
+                                     num_q == NumWidth'(91) || num_q == NumWidth'(93))) begin
+                        word_ok = 1'b0;  // G02/G03 too, until circle mode
+                        fail_code = ErrUnsupported;
+                      end
+                    end
+                    WordM: begin
+                      if (num_q == NumWidth'(2) || num_q == NumWidth'(30)) begin
+                        end_blk_d = 1'b1;
+                      end else begin
+                        word_ok = 1'b0;
+                        fail_code = ErrUnsupported;
+                      end
+                    end
+                    WordX: begin
+                      dx_d = num_q[IncWidth-1:0];
+                      dx_neg_d = neg_q;
+                      motion_blk_d = 1'b1;
+                    end
+                    WordY: begin
+                      dy_d = num_q[IncWidth-1:0];
+                      dy_neg_d = neg_q;
+                      motion_blk_d = 1'b1;
+                    end
+                    WordI: begin
+                      i_d = num_q[IncWidth-1:0];
+                      i_neg_d = neg_q;
+                      motion_blk_d = 1'b1;
+                    end
+                    WordJ: begin
+                      j_d = num_q[IncWidth-1:0];
+                      j_neg_d = neg_q;
+                      motion_blk_d = 1'b1;
+                    end
+                    default: feed_d = num_q[FeedWidth-1:0];  // WordF
+                  endcase
+                end
+                if (!word_ok) begin
+                  fail = 1'b1;
+                  fail_offset = word_offset_q;
+                end
+              end
+              // Then the character itself.
+              if (word_ok) begin
+                if (ch == ChN || ch == ChG || ch == ChM || ch == ChX || ch == ChY ||
+                    ch == ChI || ch == ChJ || ch == ChF) begin
+                  if (ch == ChN && n_seen_q) begin
+                    fail = 1'b1;
+                    fail_code = ErrMissingEob;  // a second N: the LF is missing
+                  end else begin
+                    unique case (ch)
+                      ChN:     word_d = WordN;
+                      ChG:     word_d = WordG;
+                      ChM:     word_d = WordM;
+                      ChX:     word_d = WordX;
+                      ChY:     word_d = WordY;
+                      ChI:     word_d = WordI;
+                      ChJ:     word_d = WordJ;
+                      default: word_d = WordF;
+                    endcase
+                    if (ch == ChN) n_seen_d = 1'b1;
+                    any_word_d    = 1'b1;
+                    num_state_d   = NumStart;
+                    num_d         = '0;
+                    neg_d         = 1'b0;
+                    frac_count_d  = '0;
+                    word_offset_d = frame_count_q;
+                  end
+                end else if (ch == ChLf) begin
+                  if (motion_blk_d) begin
+                    if (feed_d == '0) begin
+                      fail = 1'b1;
+                      fail_code = ErrMissingFeed;
+                    end else begin
+                      state_d = StHold;  // cleared at the handoff
+                    end
+                  end else begin
+                    if (end_blk_d) state_d = StEnd;
+                    n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
+                    dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
+                    dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
+                  end
+                end else if (ch == ChOpen) begin
+                  state_d = StComment;
+                end else if (ch == ChPercent) begin
+                  fail = 1'b1;
+                  fail_code = any_word_q ? ErrMissingEob : ErrTruncated;
+                end else begin
+                  fail = 1'b1;
+                  fail_code = ErrUnknownChar;
+                end
+              end
+            end
+          end
+          default: ;  // StHold, StError: not ready, no frame is taken
+        endcase
+      end
+    end else if (state_q == StHold) begin
+      if (blk_ready_i) begin
+        state_d = end_blk_q ? StEnd : StBody;
+        n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
+        dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
+        dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
+      end
+    end else if (tape_end_i &&
+                 (state_q == StLeader || state_q == StBody || state_q == StComment)) begin
+      fail = 1'b1;
+      fail_code = ErrTruncated;  // at the offset of the frame that never came
+    end
+
+    if (fail) begin
+      state_d      = StError;
+      err_code_d   = fail_code;
+      err_block_d  = n_d;  // includes an N committed by this frame
+      err_offset_d = fail_offset;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      state_q       <= StLeader;
+      frame_count_q <= '0;
+      word_q        <= WordNone;
+      num_state_q   <= NumStart;
+      num_q         <= '0;
+      neg_q         <= 1'b0;
+      frac_count_q  <= '0;
+      word_offset_q <= '0;
+      n_q           <= '0;
+      motion_q      <= 2'd1;
+      feed_q        <= '0;
+      dx_q <= '0;  dx_neg_q <= 1'b0;
+      dy_q <= '0;  dy_neg_q <= 1'b0;
+      i_q  <= '0;  i_neg_q  <= 1'b0;
+      j_q  <= '0;  j_neg_q  <= 1'b0;
+      n_seen_q      <= 1'b0;
+      any_word_q    <= 1'b0;
+      motion_blk_q  <= 1'b0;
+      end_blk_q     <= 1'b0;
+      err_code_q    <= '0;
+      err_block_q   <= '0;
+      err_offset_q  <= '0;
+    end else begin
+      state_q       <= state_d;
+      frame_count_q <= frame_count_d;
+      word_q        <= word_d;
+      num_state_q   <= num_state_d;
+      num_q         <= num_d;
+      neg_q         <= neg_d;
+      frac_count_q  <= frac_count_d;
+      word_offset_q <= word_offset_d;
+      n_q           <= n_d;
+      motion_q      <= motion_d;
+      feed_q        <= feed_d;
+      dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
+      dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
+      i_q  <= i_d;   i_neg_q  <= i_neg_d;
+      j_q  <= j_d;   j_neg_q  <= j_neg_d;
+      n_seen_q      <= n_seen_d;
+      any_word_q    <= any_word_d;
+      motion_blk_q  <= motion_blk_d;
+      end_blk_q     <= end_blk_d;
+      err_code_q    <= err_code_d;
+      err_block_q   <= err_block_d;
+      err_offset_q  <= err_offset_d;
+    end
+  end
+
+  assign frame_ready_o = state_q != StHold && state_q != StError;
+  assign blk_valid_o   = state_q == StHold;
+  assign blk_n_o       = n_q;
+  assign blk_motion_o  = motion_q;
+  assign blk_dx_o      = dx_q;
+  assign blk_dx_neg_o  = dx_neg_q;
+  assign blk_dy_o      = dy_q;
+  assign blk_dy_neg_o  = dy_neg_q;
+  assign blk_i_o       = i_q;
+  assign blk_i_neg_o   = i_neg_q;
+  assign blk_j_o       = j_q;
+  assign blk_j_neg_o   = j_neg_q;
+  assign blk_feed_o    = feed_q;
+  assign end_o         = state_q == StEnd;
+  assign err_o         = state_q == StError;
+  assign err_code_o    = err_code_q;
+  assign err_block_o   = err_block_q;
+  assign err_offset_o  = err_offset_q;
+
+endmodule
