@@ -27,6 +27,12 @@ struct Format {
   unsigned frac_digits = 3;       // BLU = 10^-frac_digits mm
   unsigned feed_frac_digits = 3;  // fraction digits of F
   unsigned inc_width = 16;        // |dx|,|dy|,|i|,|j| <= 2^inc_width - 1
+  // Added after v1's first draft; the defaults are the interpolator's (InterpConfig).
+  unsigned feed_width = 32;       // F <= 2^feed_width - 1
+  unsigned seq_width = 20;        // N <= 2^seq_width - 1
+  // G02/G03 accepted (circle mode). false = the reader rejects them as an unsupported
+  // code (error 6), as an interpolator without circle mode does.
+  bool arcs = true;
 };
 
 struct Program {
@@ -40,6 +46,7 @@ struct TapeErrorInfo {
   uint32_t block = 0;
   uint64_t offset = 0;
   std::string message;
+  unsigned code = 0;  // the interpolator's error code (ncinterp::TapeError, interp_ports.h)
 };
 
 class TapeFormatError : public std::runtime_error {
@@ -51,16 +58,30 @@ class TapeFormatError : public std::runtime_error {
   TapeErrorInfo info_;
 };
 
+// "block N<n>, offset K: message": the part of the one-line error after "FILE: ".
+std::string describe(const TapeErrorInfo& info);
+
 // Program -> tape text ("%\n" setup block, motion blocks, M02, "%\n").
 std::string format_program(const Program& program, const Format& format);
 // Adds ISO 840 even parity in bit 7 of every 7-bit character.
 std::vector<uint8_t> add_parity(std::string_view text);
 // Frames -> Program; throws TapeFormatError on any rule the decoder enforces.
 Program parse_frames(const std::vector<uint8_t>& frames, const Format& format);
+// Frames -> every block before the first error, and that error (if any). What a machine
+// plays of a bad tape: the system model's monitors use it to know the programmed chords.
+struct ParseResult {
+  Program program;
+  std::optional<TapeErrorInfo> error;
+};
+ParseResult parse_frames_partial(const std::vector<uint8_t>& frames, const Format& format);
+// True when the frame has an even number of ones (ISO 840).
+bool has_even_parity(uint8_t frame);
 // Reads a tape file: .tape files are frames as they are; any other file (.nc, .ngc, .txt)
 // is plain text and gets parity added. Throws std::runtime_error naming the file.
 std::vector<uint8_t> load_frames(const std::string& path);
-// Writes frames atomically (temporary file + rename): no half-written tape on failure.
+// Writes the program atomically (temporary file + rename): no half-written tape on failure.
+// A .tape path gets frames with parity; any other extension gets the plain text. Throws
+// std::invalid_argument (a value the format cannot hold) before touching the file system.
 void write_tape_file(const std::string& path, const Program& program, const Format& format);
 
 }  // namespace ncinterp::tape
