@@ -1,0 +1,123 @@
+// One check of a tape (see check_session.h).
+#include "check_session.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "chords/chord_planner.h"
+#include "frame_source.h"
+#include "line_schedule.h"
+
+#ifdef NCINTERP_CHECKER_HAS_RTL
+#include "rtl_harness.h"
+#endif
+
+namespace ncinterp::checker {
+namespace {
+
+// Enough clocks for the whole program: reading every frame plus every block's time (arcs
+// get twice their iterations as slack), so a run that needs more has hung.
+uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
+                      uint64_t cycles_per_frame, uint64_t modulus) {
+  uint64_t total = static_cast<uint64_t>(frames) * cycles_per_frame + 10000;
+  for (const ProgrammedBlock& b : blocks) {
+    const uint64_t big = static_cast<uint64_t>(std::max({std::llabs(b.tape.dx), std::llabs(b.tape.dy),
+                                                         std::llabs(b.tape.i), std::llabs(b.tape.j)}));
+    const LineSchedule s(big, 0, b.tape.feed, modulus);
+    total += std::max(s.duration(), 4 * s.iterations() + 4) + 4;
+  }
+  return total + total / 8;
+}
+
+}  // namespace
+
+const char* engine_name(EngineKind engine) { return engine == EngineKind::kGolden ? "golden" : "rtl"; }
+
+bool rtl_available() {
+#ifdef NCINTERP_CHECKER_HAS_RTL
+  return true;
+#else
+  return false;
+#endif
+}
+
+double blu_of(const tape::Format& format) { return std::pow(10.0, -static_cast<double>(format.frac_digits)); }
+
+InterpConfig interp_config(const tape::Format& format, double clock_hz) {
+  InterpConfig cfg;
+  cfg.inc_width = format.inc_width;
+  cfg.frac_digits = format.frac_digits;
+  cfg.feed_frac_digits = format.feed_frac_digits;
+  cfg.feed_width = format.feed_width;
+  cfg.seq_width = format.seq_width;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
+  return cfg;
+}
+
+IntPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup) {
+  const double to_blu = 1.0 / blu_of(setup.format);
+  firststage::Vec2 s;
+  if (setup.start_mm) s = *setup.start_mm;
+  else if (contour) s = contour->origin;
+  const firststage::GridPoint g = firststage::round_to_grid(to_blu * s);
+  return {g.x, g.y};
+}
+
+CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Contour* contour,
+                       const CheckSetup& setup) {
+  if (!(setup.clock_hz > 0)) throw std::invalid_argument("--clock-hz must be > 0");
+  if (!(setup.reader_cps > 0)) throw std::invalid_argument("--reader-cps must be > 0");
+  if (!(setup.tol_mm > 0)) throw std::invalid_argument("--tol must be > 0");
+  if (setup.fault && setup.engine != EngineKind::kGolden)
+    throw std::invalid_argument("faults are injected through the golden model's test hook only");
+  if (setup.engine == EngineKind::kRtl && !rtl_available())
+    throw std::invalid_argument("this build has no verilated RTL (use --engine golden)");
+
+  CheckOutcome out;
+  out.blu_mm = blu_of(setup.format);
+  out.tol_blu = setup.tol_mm / out.blu_mm;
+  out.program = tape::parse_frames(frames, setup.format);
+  std::vector<ProgrammedBlock> blocks = lay_out(out.program);
+
+  const InterpConfig cfg = interp_config(setup.format, setup.clock_hz);
+  if (contour) {
+    ReferenceOptions ro;
+    ro.blu_mm = out.blu_mm;
+    ro.start = tape_start(contour, setup);
+    ro.cutter_radius_mm = setup.cutter_radius_mm;
+    ro.cutter_left = setup.cutter_left;
+    out.reference = std::make_unique<ReferenceContour>(*contour, ro);
+  }
+  CheckerOptions co;
+  co.feed_modulus = cfg.feed_modulus;
+  co.schedule = setup.schedule;
+  co.arc_bound_blu = setup.arc_bound_blu;
+  co.tol_blu = out.tol_blu;
+  co.keep_pulses = setup.keep_pulses;
+  const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);
+  const uint64_t budget =
+      setup.max_cycles ? setup.max_cycles : cycle_budget(blocks, frames.size(), cpf, cfg.feed_modulus);
+  out.checker = std::make_unique<TrajectoryChecker>(std::move(blocks), out.reference.get(), co);
+
+  TrajectoryChecker& checker = *out.checker;
+  auto observe = [&checker](uint64_t cycle, const InterpOutputs& o) { checker.observe(cycle, o); };
+  FrameSource source(frames, cpf);
+  const auto t0 = std::chrono::steady_clock::now();
+  if (setup.engine == EngineKind::kGolden) {
+    GoldenInterp dut(cfg);
+    if (setup.fault) dut.inject(*setup.fault);
+    out.run = run_engine(dut, source, budget, observe);
+  } else {
+#ifdef NCINTERP_CHECKER_HAS_RTL
+    RtlHarness dut(cfg);
+    out.run = run_engine(dut, source, budget, observe);
+#endif
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  checker.finish();
+  if (out.reference) checker.check_tolerance(out.tol_blu);
+  return out;
+}
+
+}  // namespace ncinterp::checker

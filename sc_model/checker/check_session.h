@@ -1,0 +1,65 @@
+// One check of a tape: read it back, play it on an engine clock by clock, and let the
+// trajectory checker judge every pulse against the tape and the contour.
+// Idea: everything `ncinterp check`, the regression and the soak need, in one call: the
+// programmed path comes from the software tape reader, the contour from the first stage's
+// reader (the caller passes it in), the pulses from the golden model or the verilated RTL.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "engine_run.h"
+#include "geometry/contour.h"
+#include "golden_interp.h"
+#include "reference_contour.h"
+#include "tape/tape.h"
+#include "trajectory_checker.h"
+
+namespace ncinterp::checker {
+
+enum class EngineKind { kGolden, kRtl };
+const char* engine_name(EngineKind engine);
+// True when this build has the verilated RTL harness.
+bool rtl_available();
+
+struct CheckSetup {
+  tape::Format format;             // how to read the tape (BLU, register widths)
+  double clock_hz = 1e6;
+  double reader_cps = 1000.0;      // tape reader, characters per second
+  EngineKind engine = EngineKind::kGolden;
+  double tol_mm = 0.01;            // delta: the total error's bound
+  // Absolute grid point of the tape start (mm); unset: the contour's start on the grid.
+  std::optional<firststage::Vec2> start_mm;
+  double cutter_radius_mm = 0.0;
+  bool cutter_left = true;
+  bool keep_pulses = true;
+  bool schedule = true;            // documented-timing rules for line blocks
+  double arc_bound_blu = 1.0;      // see CheckerOptions
+  uint64_t max_cycles = 0;         // 0: enough for the program (estimated from the tape)
+  // Golden engine only: a fault injected through the model's test hook.
+  std::optional<GoldenInterp::Fault> fault;
+};
+
+struct CheckOutcome {
+  tape::Program program;
+  std::unique_ptr<ReferenceContour> reference;  // null without a contour
+  std::unique_ptr<TrajectoryChecker> checker;
+  RunEnd run;
+  double seconds = 0.0;     // wall time of the engine run with the checker
+  double tol_blu = 0.0;
+  double blu_mm = 0.001;
+  // No rule failed and the total error is within the tolerance.
+  bool passed() const { return checker && checker->violation_count() == 0; }
+};
+
+double blu_of(const tape::Format& format);
+InterpConfig interp_config(const tape::Format& format, double clock_hz);
+// The tape start's grid point: setup.start_mm, else the contour's start rounded to the grid.
+IntPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup);
+
+// Throws tape::TapeFormatError for a bad tape, std::invalid_argument for bad options.
+CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Contour* contour,
+                       const CheckSetup& setup);
+
+}  // namespace ncinterp::checker

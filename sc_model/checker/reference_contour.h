@@ -1,0 +1,68 @@
+// The contour the tool must follow, as the checker measures the total error against it.
+// Idea: the part contour from the first stage's reader (mm) is scaled to BLU and placed so
+// that the tape start, where the position counters read (0, 0), sits at its absolute grid
+// point. Without a cutter radius the total error of a tool position is its distance from
+// the contour along the contour's normal (ContourDistance). With a cutter radius R the tool
+// centre must run on the offset contour (the equidistant at R on the cutter's side), so
+// the total error is |d - R| with d the distance to the part contour; d - R < 0 means the
+// cutter cuts into the part (gouge). At a convex corner of the part the first stage takes
+// the centre around the corner outside the equidistant on purpose (the cutter touches both
+// sides to the vertex and leaves the corner sharp): a position whose nearest part point is
+// such a corner vertex and which is farther than R counts as a corner excursion, reported
+// apart, not as error. Rapid moves (G0) are not cut: the blocks that follow one (and do
+// not lie on the cutting contour) get no total error.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "contour_distance.h"
+#include "geometry/contour.h"
+#include "programmed_path.h"
+
+namespace ncinterp::checker {
+
+struct ReferenceOptions {
+  double blu_mm = 0.001;
+  IntPoint start;                // absolute grid point (BLU) of the tape start
+  double cutter_radius_mm = 0.0; // 0: the tape is the contour itself
+  bool cutter_left = true;       // cutter on the left of the direction of travel
+};
+
+struct TotalError {
+  double error = 0.0;      // BLU: |d| (no offset) or |d - R|
+  double signed_excess = 0.0;  // d - R (offset) or d, BLU
+  bool corner = false;     // offset only: outside the equidistant at a convex corner
+  int segment = -1;        // contour segment of the foot
+  Vec2 foot;               // relative to the tape start, BLU
+};
+
+class ReferenceContour {
+ public:
+  ReferenceContour(const firststage::Contour& contour, const ReferenceOptions& options);
+
+  // Total error of a tool position (relative to the tape start, BLU).
+  TotalError measure(Vec2 position) const;
+  // True when a programmed block follows one of the input's rapid moves (G0) and not the
+  // cutting contour: such a block is a traverse, its total error is not measured.
+  bool is_rapid(const ProgrammedBlock& block, double tol_blu) const;
+  // Name of the input element a contour segment belongs to ("line 12 (G2)" ...).
+  std::string element_name(int segment) const;
+  // The cutting and rapid segments in absolute BLU (subtract start() for positions), for plots.
+  const std::vector<firststage::Segment>& cutting_segments() const { return cut_.segments(); }
+  const std::vector<firststage::Segment>& rapid_segments() const { return rapids_; }
+  double radius_blu() const { return radius_; }
+  IntPoint start() const { return options_.start; }
+
+ private:
+  bool convex_corner_at(int segment, double u) const;
+
+  ReferenceOptions options_;
+  double radius_ = 0.0;  // BLU
+  ContourDistance cut_;
+  std::vector<firststage::Segment> rapids_;
+  std::vector<std::string> names_;     // per cutting segment
+  // Per cutting segment: is the joint at its start / end a convex corner (offset case)?
+  std::vector<char> corner_start_, corner_end_;
+};
+
+}  // namespace ncinterp::checker

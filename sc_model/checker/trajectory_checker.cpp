@@ -1,0 +1,300 @@
+// Pulse-path monitor (see trajectory_checker.h).
+#include "trajectory_checker.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace ncinterp::checker {
+namespace {
+
+const char* axis_name(int a) { return a == 0 ? "X" : "Y"; }
+
+std::string point_text(IntPoint p) {
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+}
+
+// L1 line DDA bound (docs/interpolator.md 5.5): (|dx| + |dy|) / (2 sqrt(dx^2 + dy^2)).
+double line_bound(int64_t dx, int64_t dy) {
+  const double ax = std::fabs(static_cast<double>(dx)), ay = std::fabs(static_cast<double>(dy));
+  const double len = std::hypot(ax, ay);
+  return len > 0 ? (ax + ay) / (2.0 * len) : 0.0;
+}
+
+// Slack for comparing a floating distance with a bound (both computed from integers).
+constexpr double kBoundSlack = 1e-9;
+
+}  // namespace
+
+const char* rule_name(Rule rule) {
+  switch (rule) {
+    case Rule::kCounter: return "counter";
+    case Rule::kIdlePulse: return "idle";
+    case Rule::kDirection: return "direction";
+    case Rule::kPulseCount: return "count";
+    case Rule::kSchedule: return "schedule";
+    case Rule::kPathBound: return "bound";
+    case Rule::kEndpoint: return "endpoint";
+    case Rule::kDuration: return "duration";
+    case Rule::kSequence: return "sequence";
+    case Rule::kComplete: return "complete";
+    case Rule::kTotalError: return "tolerance";
+  }
+  return "?";
+}
+
+void ErrorStat::add(double e, uint64_t at_cycle, IntPoint at, size_t in_block) {
+  if (count == 0 || e > max) {
+    max = e;
+    cycle = at_cycle;
+    position = at;
+    block = in_block;
+  }
+  sum_sq += e * e;
+  ++count;
+}
+
+void ErrorStat::merge(const ErrorStat& o) {
+  if (o.count == 0) return;
+  if (count == 0 || o.max > max) {
+    max = o.max;
+    cycle = o.cycle;
+    position = o.position;
+    block = o.block;
+  }
+  sum_sq += o.sum_sq;
+  count += o.count;
+}
+
+double ErrorStat::rms() const { return count ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0; }
+
+TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
+                                     const ReferenceContour* reference, const CheckerOptions& options)
+    : blocks_(std::move(blocks)), reference_(reference), options_(options) {
+  results_.resize(blocks_.size());
+  for (size_t k = 0; k < blocks_.size(); ++k) {
+    const ProgrammedBlock& b = blocks_[k];
+    BlockResult& r = results_[k];
+    r.rapid = reference_ && reference_->is_rapid(b, options_.tol_blu);
+    r.bound = b.is_arc() ? options_.arc_bound_blu : line_bound(b.tape.dx, b.tape.dy);
+    r.ideal_clocks = b.tape.feed ? static_cast<double>(options_.feed_modulus) /
+                                       static_cast<double>(b.tape.feed)
+                                 : 0.0;
+    if (!b.is_arc()) {
+      const LineSchedule s(std::llabs(b.tape.dx), std::llabs(b.tape.dy), b.tape.feed,
+                           options_.feed_modulus);
+      r.saturated = s.saturated();
+    }
+  }
+}
+
+void TrajectoryChecker::report(Rule rule, uint64_t cycle, std::string detail) {
+  // First failure of each rule per block (and per stretch between blocks).
+  const uint32_t bit = 1u << static_cast<unsigned>(rule);
+  if (reported_ & bit) return;
+  reported_ |= bit;
+  ++violation_count_;
+  if (violations_.size() >= options_.max_violations) return;
+  Violation v;
+  v.rule = rule;
+  const bool any_block = loaded_ > 0 && cur_ < blocks_.size();
+  v.block = any_block ? cur_ : SIZE_MAX;
+  v.n = any_block ? blocks_[cur_].tape.n : 0;
+  v.cycle = cycle;
+  v.position = pos_;
+  v.detail = std::move(detail);
+  violations_.push_back(std::move(v));
+}
+
+void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
+  if (!started_) {
+    started_ = true;
+    prev_ = o;
+    pos_ = {o.pos_x, o.pos_y};
+    last_cycle_ = cycle;
+    return;
+  }
+  last_cycle_ = cycle;
+  const bool step[2] = {o.step_x, o.step_y};
+  const bool dir[2] = {o.dir_x, o.dir_y};
+  for (int a = 0; a < 2; ++a)
+    if (step[a]) (a == 0 ? pos_.x : pos_.y) += dir[a] ? 1 : -1;
+
+  // Block boundaries: a load shows as busy rising or block_n_o changing; two consecutive
+  // line blocks with the same N are told apart by the documented block time.
+  bool load = o.busy && (!prev_.busy || o.block_n != prev_.block_n);
+  if (!load && o.busy && active_ && options_.schedule && !blocks_[cur_].is_arc() &&
+      cycle == results_[cur_].load_cycle + schedule_.duration() && cur_ + 1 < blocks_.size() &&
+      blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n)
+    load = true;
+  if (active_ && (load || !o.busy)) end_block(cycle);
+  if (load) start_block(cycle, o);
+  if (loaded_ > 0 && !o.busy && !o.done && !o.error) ++gap_clocks_;
+
+  if (o.pos_x != pos_.x || o.pos_y != pos_.y)
+    report(Rule::kCounter, cycle,
+           "position counters show " + point_text({o.pos_x, o.pos_y}) + ", the pulses add up to " +
+               point_text(pos_));
+
+  const bool pulsed = step[0] || step[1];
+  if (active_) {
+    // The direction outputs are held for the whole block.
+    const ProgrammedBlock& b = blocks_[cur_];
+    const int64_t d[2] = {b.tape.dx, b.tape.dy};
+    for (int a = 0; a < 2; ++a) {
+      const bool known = !b.is_arc() || d[a] != 0;
+      if (known && dir[a] != expected_dir_[a])
+        report(Rule::kDirection, cycle,
+               std::string("dir_") + (a == 0 ? "x" : "y") + "_o = " + (dir[a] ? "1" : "0") +
+                   " while the block moves " + axis_name(a) + " by " + std::to_string(d[a]));
+    }
+    if (pulsed) on_pulse(cycle, step, dir);
+    if (options_.schedule && !b.is_arc()) check_schedule(cycle, pulsed);
+  } else if (pulsed) {
+    report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
+  }
+  prev_ = o;
+}
+
+void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
+  if (loaded_ >= blocks_.size()) {
+    active_ = false;
+    report(Rule::kSequence, cycle,
+           "block N" + std::to_string(o.block_n) + " loaded after the last block of the tape");
+    return;
+  }
+  cur_ = loaded_++;
+  active_ = true;
+  reported_ = 0;
+  const ProgrammedBlock& b = blocks_[cur_];
+  BlockResult& r = results_[cur_];
+  r.played = true;
+  r.load_cycle = cycle;
+  progress_[0] = progress_[1] = 0;
+  expected_dir_[0] = b.is_arc() ? b.tape.dx > 0 : b.tape.dx >= 0;
+  expected_dir_[1] = b.is_arc() ? b.tape.dy > 0 : b.tape.dy >= 0;
+  iterations_ = 0;
+  if (!b.is_arc())
+    schedule_ = LineSchedule(std::llabs(b.tape.dx), std::llabs(b.tape.dy), b.tape.feed,
+                             options_.feed_modulus);
+  if (o.block_n != b.tape.n)
+    report(Rule::kSequence, cycle,
+           "block_n_o = " + std::to_string(o.block_n) + " at the load of tape block " +
+               std::to_string(cur_ + 1) + " (N" + std::to_string(b.tape.n) + ")");
+}
+
+void TrajectoryChecker::end_block(uint64_t cycle) {
+  const ProgrammedBlock& b = blocks_[cur_];
+  BlockResult& r = results_[cur_];
+  r.finished = true;
+  r.end_cycle = cycle;
+  r.clocks = cycle - r.load_cycle;
+  const int64_t d[2] = {b.tape.dx, b.tape.dy};
+  for (int a = 0; a < 2; ++a) {
+    if (progress_[a] != std::llabs(d[a]))
+      report(Rule::kEndpoint, cycle,
+             std::string("axis ") + axis_name(a) + " moved " +
+                 std::to_string(d[a] >= 0 ? progress_[a] : -progress_[a]) + " BLU, programmed " +
+                 std::to_string(d[a]));
+  }
+  if (options_.schedule && !b.is_arc() && r.clocks != schedule_.duration())
+    report(Rule::kDuration, cycle,
+           "block took " + std::to_string(r.clocks) + " clocks, documented " +
+               std::to_string(schedule_.duration()));
+  active_ = false;
+  reported_ = 0;
+}
+
+void TrajectoryChecker::on_pulse(uint64_t cycle, const bool step[2], const bool dir[2]) {
+  const ProgrammedBlock& b = blocks_[cur_];
+  BlockResult& r = results_[cur_];
+  const int64_t d[2] = {b.tape.dx, b.tape.dy};
+  for (int a = 0; a < 2; ++a) {
+    if (!step[a]) continue;
+    ++r.pulses[a];
+    const bool along = d[a] != 0 ? dir[a] == (d[a] > 0) : dir[a];
+    progress_[a] += along ? 1 : -1;
+    if (!along && d[a] != 0)
+      report(Rule::kDirection, cycle,
+             std::string("pulse on ") + axis_name(a) + " against the block's direction");
+    if (std::llabs(progress_[a]) > std::llabs(d[a]) || r.pulses[a] > static_cast<uint64_t>(std::llabs(d[a])))
+      report(Rule::kPulseCount, cycle,
+             std::string("axis ") + axis_name(a) + ": pulse " + std::to_string(r.pulses[a]) +
+                 " of a block that moves it by " + std::to_string(d[a]));
+  }
+  const Vec2 q = to_vec(pos_);
+  const double path = distance_to_block(b, q);
+  r.path.add(path, cycle, pos_, cur_);
+  path_.add(path, cycle, pos_, cur_);
+  if (path > r.bound + kBoundSlack)
+    report(Rule::kPathBound, cycle,
+           "pulse position " + std::to_string(path) + " BLU from the block's path, bound " +
+               std::to_string(r.bound));
+  float total = -1.0f;
+  if (reference_ && !r.rapid) {
+    const TotalError e = reference_->measure(q);
+    if (e.corner) {
+      r.corner_excursion = std::max(r.corner_excursion, e.error);
+    } else {
+      r.total.add(e.error, cycle, pos_, cur_);
+      total_.add(e.error, cycle, pos_, cur_);
+      total = static_cast<float>(e.error);
+    }
+  }
+  if (options_.keep_pulses)
+    pulses_.push_back({cycle, static_cast<uint32_t>(cur_), pos_, static_cast<float>(path), total});
+}
+
+void TrajectoryChecker::check_schedule(uint64_t cycle, bool pulsed) {
+  const BlockResult& r = results_[cur_];
+  bool due = false;
+  while (iterations_ < schedule_.iterations() &&
+         r.load_cycle + schedule_.iteration_edge(iterations_ + 1) <= cycle) {
+    ++iterations_;
+    due = true;
+  }
+  if (!due && !pulsed) return;
+  const ProgrammedBlock& b = blocks_[cur_];
+  const int64_t d[2] = {b.tape.dx, b.tape.dy};
+  for (int a = 0; a < 2; ++a) {
+    const uint64_t expected = schedule_.pulses(std::llabs(d[a]), iterations_);
+    if (progress_[a] != static_cast<int64_t>(expected))
+      report(Rule::kSchedule, cycle,
+             std::string("axis ") + axis_name(a) + ": " + std::to_string(progress_[a]) +
+                 " pulses, documented " + std::to_string(expected) + " after iteration " +
+                 std::to_string(iterations_) + " of " + std::to_string(schedule_.iterations()));
+  }
+}
+
+void TrajectoryChecker::finish() {
+  const InterpOutputs& o = prev_;
+  if (o.error) {
+    report(Rule::kComplete, last_cycle_,
+           "the interpolator stopped on a tape error: block N" + std::to_string(o.error_block) +
+               ", offset " + std::to_string(o.error_offset) + ": " +
+               tape_error_message(static_cast<TapeError>(o.error_code)));
+  } else if (!o.done || loaded_ < blocks_.size()) {
+    report(Rule::kComplete, last_cycle_,
+           std::to_string(loaded_) + " of " + std::to_string(blocks_.size()) +
+               " blocks played and " + (o.done ? "done" : "no end of program") + " after " +
+               std::to_string(last_cycle_) + " clocks");
+  }
+}
+
+}  // namespace ncinterp::checker
+
+namespace ncinterp::checker {
+
+void TrajectoryChecker::check_tolerance(double tol_blu) {
+  for (size_t k = 0; k < results_.size(); ++k) {
+    const ErrorStat& t = results_[k].total;
+    if (t.count == 0 || t.max <= tol_blu) continue;
+    ++violation_count_;
+    if (violations_.size() >= options_.max_violations) continue;
+    violations_.push_back({Rule::kTotalError, k, blocks_[k].tape.n, t.cycle, t.position,
+                           "total error " + std::to_string(t.max) + " BLU exceeds the tolerance " +
+                               std::to_string(tol_blu) + " BLU"});
+  }
+}
+
+}  // namespace ncinterp::checker

@@ -1,0 +1,166 @@
+// Pulse-path monitor: watches the interpolator's outputs clock by clock, follows the tape's
+// blocks, measures every pulse position against the programmed block (interpolator error)
+// and the part contour (total error), and checks every pulse.
+// Idea: the machine's tool position is the integral of the step/dir pulses, so the checker
+// keeps its own position from the pulses and judges each pulse by rules derived from the
+// tape and the documented timing (docs/verification.md lists them), never from an engine:
+//   counter   pos_x_o/pos_y_o equal the integrated pulses (a counter never moves alone);
+//   idle      no pulse while no block plays;
+//   direction while a block plays, dir_*_o is the sign of its increment (1 for 0 on a
+//             line, as section 5.1 says) and every pulse goes that way;
+//   count     an axis never emits more pulses than its increment;
+//   schedule  (line blocks) the pulse count of each axis equals the documented DDA count
+//             for the iterations due by this clock (line_schedule.h): a lost, extra, early
+//             or late pulse is reported at the clock where it happens;
+//   bound     each pulse position is within the interpolator's bound of the block's path;
+//   endpoint  at the block's end each axis has emitted exactly its increment;
+//   duration  (line blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated);
+//   sequence  blocks load in tape order, block_n_o showing each block's N;
+//   complete  the run reaches the end of program with every block played.
+// Each rule reports its first failure per block with the block, the clock and the position.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "interp_ports.h"
+#include "line_schedule.h"
+#include "programmed_path.h"
+#include "reference_contour.h"
+
+namespace ncinterp::checker {
+
+enum class Rule : uint8_t {
+  kCounter,
+  kIdlePulse,
+  kDirection,
+  kPulseCount,
+  kSchedule,
+  kPathBound,
+  kEndpoint,
+  kDuration,
+  kSequence,
+  kComplete,
+  kTotalError,  // set by the caller's tolerance check, not by observe()
+};
+const char* rule_name(Rule rule);
+
+struct Violation {
+  Rule rule;
+  size_t block = 0;    // index into the programmed blocks (SIZE_MAX: none)
+  uint32_t n = 0;      // the block's N
+  uint64_t cycle = 0;
+  IntPoint position;   // tool position at that clock, BLU from the tape start
+  std::string detail;
+};
+
+// Max, RMS and where the max is, of an error sampled at pulses.
+struct ErrorStat {
+  double max = 0.0;
+  double sum_sq = 0.0;
+  uint64_t count = 0;
+  uint64_t cycle = 0;     // where the max is
+  IntPoint position;
+  size_t block = 0;
+  void add(double e, uint64_t at_cycle, IntPoint at, size_t in_block);
+  void merge(const ErrorStat& o);
+  double rms() const;
+};
+
+struct BlockResult {
+  bool played = false;     // loaded
+  bool finished = false;   // ended (next load or busy falling)
+  bool rapid = false;      // a traverse: no total error
+  uint64_t load_cycle = 0, end_cycle = 0;
+  uint64_t pulses[2] = {0, 0};
+  ErrorStat path;          // distance to the programmed block
+  ErrorStat total;         // distance to the contour (not rapid)
+  double corner_excursion = 0.0;  // offset: max distance outside the equidistant at a corner
+  double bound = 0.0;      // interpolator bound used for the path rule, BLU
+  bool saturated = false;  // lines: needs more iterations than clocks (documented)
+  double ideal_clocks = 0.0;  // 1/F in clocks
+  uint64_t clocks = 0;        // measured, load edge to the next load edge / busy falling
+  double feed_relative_error() const {
+    return ideal_clocks > 0 ? (static_cast<double>(clocks) - ideal_clocks) / ideal_clocks : 0.0;
+  }
+};
+
+// One pulse position, for plots and for error-along-the-path figures.
+struct PulseSample {
+  uint64_t cycle;
+  uint32_t block;  // index
+  IntPoint position;
+  float path_error, total_error;  // BLU; total < 0: not measured (rapid)
+};
+
+struct CheckerOptions {
+  uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;  // M = 60 f_clk 10^FeedFracDigits
+  bool schedule = true;        // the schedule and duration rules for line blocks
+  // Bound of the pulse path around an arc block (BLU). The circle mode's own bound goes
+  // here once docs/interpolator.md states it.
+  double arc_bound_blu = 1.0;
+  double tol_blu = 10.0;       // delta, for telling rapid traverses from cutting blocks
+  bool keep_pulses = true;     // record every pulse (plots, error along the path)
+  size_t max_violations = 1000;  // details kept; all are counted
+};
+
+class TrajectoryChecker {
+ public:
+  // reference may be null (no contour: only the interpolator's error and the rules).
+  TrajectoryChecker(std::vector<ProgrammedBlock> blocks, const ReferenceContour* reference,
+                    const CheckerOptions& options);
+
+  // The outputs after reset (cycle 0), then after every clock edge, in order.
+  void observe(uint64_t cycle, const InterpOutputs& o);
+  // End of the run (last outputs observed): the complete rule, an engine's tape error.
+  void finish();
+  // The tolerance rule: every block whose total error exceeds tol_blu, at its maximum.
+  void check_tolerance(double tol_blu);
+
+  const std::vector<ProgrammedBlock>& blocks() const { return blocks_; }
+  const std::vector<BlockResult>& results() const { return results_; }
+  const std::vector<Violation>& violations() const { return violations_; }
+  uint64_t violation_count() const { return violation_count_; }
+  const std::vector<PulseSample>& pulses() const { return pulses_; }
+  const ErrorStat& path_error() const { return path_; }
+  const ErrorStat& total_error() const { return total_; }
+  IntPoint position() const { return pos_; }
+  uint64_t cycles() const { return last_cycle_; }
+  uint64_t gap_clocks() const { return gap_clocks_; }
+  const InterpOutputs& last_outputs() const { return prev_; }
+
+ private:
+  void start_block(uint64_t cycle, const InterpOutputs& o);
+  void end_block(uint64_t cycle);
+  void on_pulse(uint64_t cycle, const bool step[2], const bool dir[2]);
+  void check_schedule(uint64_t cycle, bool pulsed);
+  void report(Rule rule, uint64_t cycle, std::string detail);
+
+  std::vector<ProgrammedBlock> blocks_;
+  std::vector<BlockResult> results_;
+  const ReferenceContour* reference_;
+  CheckerOptions options_;
+
+  bool started_ = false;
+  InterpOutputs prev_;
+  uint64_t last_cycle_ = 0;
+  IntPoint pos_;                 // integrated pulses
+  uint64_t gap_clocks_ = 0;
+
+  // The block playing.
+  bool active_ = false;
+  size_t cur_ = 0;               // index of the playing (or last played) block
+  size_t loaded_ = 0;            // blocks loaded so far
+  int64_t progress_[2] = {0, 0}; // pulses along the block's direction, per axis
+  bool expected_dir_[2] = {true, true};
+  LineSchedule schedule_;
+  uint64_t iterations_ = 0;      // documented iterations due by the last clock
+  uint32_t reported_ = 0;        // rules already reported in this block (bit per rule)
+
+  std::vector<Violation> violations_;
+  uint64_t violation_count_ = 0;
+  std::vector<PulseSample> pulses_;
+  ErrorStat path_, total_;
+};
+
+}  // namespace ncinterp::checker

@@ -1,0 +1,203 @@
+// The trajectory checker on clean golden runs (no rule may fire, the numbers must match an
+// independent computation) and on hand-made output sequences that break one rule each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "checker_test_support.h"
+#include "check_session.h"
+#include "trajectory_checker.h"
+
+namespace ncinterp::checker {
+namespace {
+
+using test::frames_of;
+
+std::string first_violation(const TrajectoryChecker& c) {
+  if (c.violations().empty()) return "none";
+  const Violation& v = c.violations().front();
+  return std::string(rule_name(v.rule)) + " N" + std::to_string(v.n) + " cycle " +
+         std::to_string(v.cycle) + ": " + v.detail;
+}
+
+TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRule) {
+  std::mt19937 rng(11);
+  CheckSetup setup;
+  setup.clock_hz = 1e6;
+  const uint64_t modulus = interp_config(setup.format, setup.clock_hz).feed_modulus;
+  for (int prog = 0; prog < 150; ++prog) {
+    const tape::Program p = test::random_line_program(rng, 12, prog % 3 == 0 ? 16 : 9, modulus, 100, 3000);
+    // Fast reader for most, a slow one (gaps between blocks) for some.
+    setup.reader_cps = prog % 5 == 0 ? 2e4 : 1e6;
+    const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
+    ASSERT_TRUE(out.passed()) << "program " << prog << ": " << first_violation(*out.checker);
+    const TrajectoryChecker& c = *out.checker;
+    for (size_t k = 0; k < p.blocks.size(); ++k) {
+      const BlockResult& r = c.results()[k];
+      ASSERT_TRUE(r.finished);
+      EXPECT_EQ(r.pulses[0], static_cast<uint64_t>(std::llabs(p.blocks[k].dx)));
+      EXPECT_EQ(r.pulses[1], static_cast<uint64_t>(std::llabs(p.blocks[k].dy)));
+      EXPECT_LE(r.path.max, r.bound + 1e-9);
+      // Documented block time: ceil(M/F), never below 1/F, less than one clock late.
+      if (!r.saturated) {
+        EXPECT_GE(static_cast<double>(r.clocks), r.ideal_clocks - 1e-9);
+        EXPECT_LT(static_cast<double>(r.clocks), r.ideal_clocks + 1.0);
+      }
+    }
+    int64_t x = 0, y = 0;
+    for (const auto& b : p.blocks) x += b.dx, y += b.dy;
+    EXPECT_EQ(c.position(), (IntPoint{x, y}));
+  }
+}
+
+// The pulse path of a chord polygon inscribed in a circle: the checker's total error at
+// every pulse equals | |p - c| - R | computed here from the recorded pulse positions.
+TEST(TrajectoryChecker, TotalErrorOfAnInscribedPolygonMatchesTheCircle) {
+  const double r_mm = 20.0;
+  firststage::Contour circle;
+  circle.origin = {r_mm, 0.0};
+  circle.segments.push_back(firststage::Segment::arc({0, 0}, r_mm, 0.0, 2 * M_PI));
+  circle.element_names = {"circle"};
+  tape::Program p;
+  const int sides = 64;
+  int64_t px = 20000, py = 0;
+  for (int k = 1; k <= sides; ++k) {
+    const double a = 2 * M_PI * k / sides;
+    const int64_t x = std::llround(20000 * std::cos(a)), y = std::llround(20000 * std::sin(a));
+    tape::Block b;
+    b.n = static_cast<uint32_t>(k);
+    b.dx = x - px;
+    b.dy = y - py;
+    b.feed = 2'000'000;  // 1/F = 30 ms: 30000 clocks at 1 MHz
+    p.blocks.push_back(b);
+    px = x, py = y;
+  }
+  CheckSetup setup;
+  setup.reader_cps = 1e6;
+  setup.tol_mm = 0.1;
+  const CheckOutcome out = run_check(frames_of(p), &circle, setup);
+  ASSERT_TRUE(out.passed()) << first_violation(*out.checker);
+  const TrajectoryChecker& c = *out.checker;
+  ASSERT_GT(c.pulses().size(), 1000u);
+  double max_e = 0.0;
+  for (const PulseSample& s : c.pulses()) {
+    const double want = std::fabs(std::hypot(20000.0 + s.position.x, static_cast<double>(s.position.y)) - 20000.0);
+    ASSERT_NEAR(s.total_error, want, 1e-3);  // float storage
+    max_e = std::max(max_e, want);
+  }
+  EXPECT_NEAR(c.total_error().max, max_e, kDistanceAccuracy);
+  // Sagitta of a 64-gon of radius 20 mm: R (1 - cos(pi/64)) = 24.1 BLU, plus the pulse path.
+  EXPECT_GT(c.total_error().max, 23.0);
+  EXPECT_LT(c.total_error().max, 25.5);
+}
+
+// Hand-made outputs: one block N7 moving (+3, 0) at a saturated feed (one iteration per clock).
+class SyntheticRun : public ::testing::Test {
+ protected:
+  SyntheticRun() {
+    tape::Block b;
+    b.n = 7;
+    b.dx = 3;
+    b.feed = 60'000'000'000;  // = M at 1 MHz: saturated
+    blocks_ = lay_out(tape::Program{{b}, false});
+    options_.feed_modulus = 60'000'000'000;
+  }
+  // Outputs after reset, then the listed clocks (busy from clock 1).
+  void play(const std::vector<InterpOutputs>& clocks) {
+    checker_ = std::make_unique<TrajectoryChecker>(blocks_, nullptr, options_);
+    checker_->observe(0, InterpOutputs{});
+    for (size_t c = 0; c < clocks.size(); ++c) checker_->observe(c + 1, clocks[c]);
+    checker_->finish();
+  }
+  static InterpOutputs busy(int64_t x, bool step = false) {
+    InterpOutputs o;
+    o.busy = true;
+    o.block_n = 7;
+    o.dir_x = o.dir_y = true;
+    o.pos_x = x;
+    o.step_x = step;
+    return o;
+  }
+  static InterpOutputs idle_done(int64_t x) {
+    InterpOutputs o;
+    o.block_n = 7;
+    o.pos_x = x;
+    o.done = true;
+    return o;
+  }
+  Rule first_rule() const { return checker_->violations().front().rule; }
+  uint64_t first_cycle() const { return checker_->violations().front().cycle; }
+
+  std::vector<ProgrammedBlock> blocks_;
+  CheckerOptions options_;
+  std::unique_ptr<TrajectoryChecker> checker_;
+};
+
+// k = 2: 4 iterations at clocks L+1..L+4, pulses floor((2 + 3j)/4) = 1, 2, 2, 3 (j=1..4):
+// pulses at iterations 1, 2 and 4; the block lasts 2^k + 1 = 5 clocks (busy falls at L+5).
+TEST_F(SyntheticRun, DocumentedSequencePasses) {
+  play({busy(0), busy(1, true), busy(2, true), busy(2), busy(3, true), idle_done(3)});
+  EXPECT_EQ(checker_->violation_count(), 0u) << checker_->violations().front().detail;
+}
+
+TEST_F(SyntheticRun, LatePulseIsReportedWhereItWasDue) {
+  play({busy(0), busy(1, true), busy(1), busy(2, true), busy(3, true), idle_done(3)});
+  ASSERT_GT(checker_->violation_count(), 0u);
+  EXPECT_EQ(first_rule(), Rule::kSchedule);
+  EXPECT_EQ(first_cycle(), 3u);
+}
+
+TEST_F(SyntheticRun, MissingPulseFailsScheduleAndEndpoint) {
+  play({busy(0), busy(1, true), busy(2, true), busy(2), busy(2), idle_done(2)});
+  ASSERT_GE(checker_->violations().size(), 2u);
+  EXPECT_EQ(first_rule(), Rule::kSchedule);
+  EXPECT_EQ(first_cycle(), 5u);
+  EXPECT_EQ(checker_->violations()[1].rule, Rule::kEndpoint);
+  EXPECT_EQ(checker_->violations()[1].cycle, 6u);
+}
+
+TEST_F(SyntheticRun, CounterMovingWithoutPulse) {
+  play({busy(0), busy(1, true), busy(3, true), busy(3), busy(4, true), idle_done(4)});
+  EXPECT_EQ(first_rule(), Rule::kCounter);
+  EXPECT_EQ(first_cycle(), 3u);
+}
+
+TEST_F(SyntheticRun, WrongDirectionOutput) {
+  InterpOutputs flipped = busy(1);
+  flipped.dir_x = false;
+  play({busy(0), busy(1, true), flipped});
+  EXPECT_EQ(first_rule(), Rule::kDirection);
+  EXPECT_EQ(first_cycle(), 3u);
+}
+
+TEST_F(SyntheticRun, PulseWhileIdle) {
+  InterpOutputs o;
+  o.step_y = true;
+  o.dir_y = true;
+  o.pos_y = 1;
+  play({o});
+  EXPECT_EQ(first_rule(), Rule::kIdlePulse);
+}
+
+TEST_F(SyntheticRun, RunThatNeverEnds) {
+  play({busy(0), busy(1, true), busy(2, true)});
+  EXPECT_EQ(checker_->violations().back().rule, Rule::kComplete);
+}
+
+TEST_F(SyntheticRun, PulseOffThePathBreaksTheBound) {
+  options_.schedule = false;  // the bound rule alone
+  InterpOutputs o = busy(1, true);
+  o.step_y = true;
+  o.pos_y = 1;
+  play({busy(0), o});
+  ASSERT_GT(checker_->violation_count(), 0u);
+  // (1, 1) is 1 BLU from the segment (0,0)-(3,0): over the bound 1/2; a Y pulse is also
+  // more than the block's 0 on Y.
+  bool bound = false;
+  for (const Violation& v : checker_->violations()) bound |= v.rule == Rule::kPathBound;
+  EXPECT_TRUE(bound);
+}
+
+}  // namespace
+}  // namespace ncinterp::checker
