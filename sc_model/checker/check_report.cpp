@@ -1,0 +1,196 @@
+// JSON report and text summary of a check (see check_report.h).
+#include "check_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace ncinterp::checker {
+namespace {
+
+using nlohmann::json;
+
+struct Frame {
+  double blu_mm;
+  IntPoint start;
+  json xy(IntPoint p) const {
+    return {{"x_mm", (start.x + p.x) * blu_mm}, {"y_mm", (start.y + p.y) * blu_mm}};
+  }
+};
+
+json stat_json(const ErrorStat& s, const TrajectoryChecker& c, const Frame& f) {
+  json j = {{"max_blu", s.max}, {"max_mm", s.max * f.blu_mm}, {"rms_blu", s.rms()},
+            {"rms_mm", s.rms() * f.blu_mm}, {"samples", s.count}};
+  if (s.count) {
+    j["at"] = {{"block", c.blocks()[s.block].tape.n}, {"cycle", s.cycle}, {"position", f.xy(s.position)}};
+  }
+  return j;
+}
+
+const char* motion_name(tape::Motion m) {
+  return m == tape::Motion::kLine ? "G01" : m == tape::Motion::kArcCw ? "G02" : "G03";
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+Frame frame_of(const CheckOutcome& o) {
+  return {o.blu_mm, o.reference ? o.reference->start() : IntPoint{}};
+}
+
+}  // namespace
+
+FeedSummary feed_summary(const TrajectoryChecker& c) {
+  FeedSummary s;
+  for (size_t k = 0; k < c.results().size(); ++k) {
+    const BlockResult& r = c.results()[k];
+    if (!r.finished) continue;
+    if (r.saturated) {
+      ++s.saturated;
+      continue;
+    }
+    ++s.measured;
+    const double e = r.feed_relative_error();
+    if (s.worst_block == SIZE_MAX || std::fabs(e) > std::fabs(s.worst_relative_error)) {
+      s.worst_relative_error = e;
+      s.worst_block = k;
+    }
+  }
+  return s;
+}
+
+json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
+  const TrajectoryChecker& c = *o.checker;
+  const Frame f = frame_of(o);
+  json j;
+  j["tape"] = ctx.tape_file;
+  j["contour"] = ctx.contour_file.empty() ? json(nullptr) : json(ctx.contour_file);
+  j["engine"] = engine_name(ctx.setup.engine);
+  j["clock_hz"] = ctx.setup.clock_hz;
+  j["reader_cps"] = ctx.setup.reader_cps;
+  j["blu_mm"] = o.blu_mm;
+  j["tol_mm"] = ctx.setup.tol_mm;
+  j["cutter_radius_mm"] = ctx.setup.cutter_radius_mm;
+  if (ctx.setup.cutter_radius_mm > 0) j["cutter_side"] = ctx.setup.cutter_left ? "left" : "right";
+  j["tape_start"] = f.xy({0, 0});
+  j["status"] = o.passed() ? "pass" : "fail";
+  j["blocks"] = c.blocks().size();
+  j["cycles"] = c.cycles();
+  j["gap_clocks"] = c.gap_clocks();
+  j["run_seconds"] = o.seconds;
+  j["done"] = o.run.done;
+  j["final_position"] = f.xy(c.position());
+  j["pulses"] = c.pulses().size();
+  j["path_error"] = stat_json(c.path_error(), c, f);
+  j["path_error"]["measured_against"] = "the programmed block (chord or arc) from the tape";
+  if (o.reference) {
+    j["total_error"] = stat_json(c.total_error(), c, f);
+    j["total_error"]["measured_against"] =
+        ctx.setup.cutter_radius_mm > 0 ? "the offset contour: |distance to the part contour - R|"
+                                       : "the part contour";
+    double corner = 0.0;
+    size_t rapids = 0;
+    for (const BlockResult& r : c.results()) corner = std::max(corner, r.corner_excursion), rapids += r.rapid;
+    j["total_error"]["corner_excursion_max_mm"] = corner * o.blu_mm;
+    j["total_error"]["rapid_blocks"] = rapids;
+  }
+  const FeedSummary fs = feed_summary(c);
+  j["feed"] = {{"worst_relative_error", fs.worst_relative_error},
+               {"blocks_measured", fs.measured},
+               {"saturated_blocks", fs.saturated}};
+  if (fs.worst_block != SIZE_MAX) {
+    const BlockResult& r = c.results()[fs.worst_block];
+    j["feed"]["at"] = {{"block", c.blocks()[fs.worst_block].tape.n},
+                       {"clocks", r.clocks},
+                       {"ideal_clocks", r.ideal_clocks}};
+  }
+  j["violation_count"] = c.violation_count();
+  json vs = json::array();
+  std::vector<Violation> sorted = c.violations();
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const Violation& a, const Violation& b) { return a.cycle < b.cycle; });
+  for (const Violation& v : sorted) {
+    vs.push_back({{"rule", rule_name(v.rule)},
+                  {"block", v.block == SIZE_MAX ? json(nullptr) : json(v.n)},
+                  {"cycle", v.cycle},
+                  {"position", f.xy(v.position)},
+                  {"detail", v.detail}});
+  }
+  j["violations"] = vs;
+  json per = json::array();
+  for (size_t k = 0; k < c.blocks().size(); ++k) {
+    const ProgrammedBlock& b = c.blocks()[k];
+    const BlockResult& r = c.results()[k];
+    json e = {{"n", b.tape.n},
+              {"motion", motion_name(b.tape.motion)},
+              {"dx", b.tape.dx},
+              {"dy", b.tape.dy},
+              {"feed", b.tape.feed},
+              {"played", r.played},
+              {"load_cycle", r.load_cycle},
+              {"clocks", r.clocks},
+              {"ideal_clocks", r.ideal_clocks},
+              {"feed_relative_error", r.feed_relative_error()},
+              {"saturated", r.saturated},
+              {"pulses", {{"x", r.pulses[0]}, {"y", r.pulses[1]}}},
+              {"bound_blu", r.bound},
+              {"path_error", stat_json(r.path, c, f)}};
+    if (b.is_arc()) e["centre"] = {{"i", b.tape.i}, {"j", b.tape.j}};
+    if (o.reference) {
+      e["rapid"] = r.rapid;
+      e["total_error"] = stat_json(r.total, c, f);
+      if (r.corner_excursion > 0) e["corner_excursion_mm"] = r.corner_excursion * o.blu_mm;
+    }
+    per.push_back(std::move(e));
+  }
+  j["per_block"] = per;
+  return j;
+}
+
+std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) {
+  const TrajectoryChecker& c = *o.checker;
+  const Frame f = frame_of(o);
+  std::ostringstream s;
+  auto where = [&](const ErrorStat& e) {
+    const double x = (f.start.x + e.position.x) * o.blu_mm, y = (f.start.y + e.position.y) * o.blu_mm;
+    return "block N" + std::to_string(c.blocks()[e.block].tape.n) + ", cycle " + std::to_string(e.cycle) +
+           ", at (" + fmt("%.3f", x) + ", " + fmt("%.3f", y) + ") mm";
+  };
+  s << ctx.tape_file << ": " << c.blocks().size() << " blocks, " << c.pulses().size() << " pulses, "
+    << c.cycles() << " clocks on the " << engine_name(ctx.setup.engine) << " engine\n";
+  const ErrorStat& p = c.path_error();
+  s << "  interpolator error (to the programmed blocks): max " << fmt("%.4f", p.max * o.blu_mm)
+    << " mm (" << fmt("%.3f", p.max) << " BLU), rms " << fmt("%.4f", p.rms() * o.blu_mm) << " mm";
+  if (p.count) s << "; max at " << where(p);
+  s << "\n";
+  if (o.reference) {
+    const ErrorStat& t = c.total_error();
+    s << "  total error (to the " << (ctx.setup.cutter_radius_mm > 0 ? "offset " : "") << "contour): max "
+      << fmt("%.4f", t.max * o.blu_mm) << " mm, rms " << fmt("%.4f", t.rms() * o.blu_mm)
+      << " mm, tolerance " << fmt("%.4f", ctx.setup.tol_mm) << " mm";
+    if (t.count) s << "; max at " << where(t);
+    s << "\n";
+  }
+  const FeedSummary fs = feed_summary(c);
+  s << "  feed: worst block time vs 1/F " << fmt("%+.3g", fs.worst_relative_error * 100) << " %";
+  if (fs.worst_block != SIZE_MAX) s << " (block N" << c.blocks()[fs.worst_block].tape.n << ")";
+  s << ", " << fs.saturated << " saturated block(s)\n";
+  if (c.violation_count() == 0) {
+    s << "  every pulse rule holds; PASS\n";
+  } else {
+    std::vector<Violation> sorted = c.violations();
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [](const Violation& a, const Violation& b) { return a.cycle < b.cycle; });
+    const Violation& v = sorted.front();
+    s << "  FAIL: " << c.violation_count() << " violation(s); first: " << rule_name(v.rule);
+    if (v.block != SIZE_MAX) s << " in block N" << v.n;
+    s << " at cycle " << v.cycle << ": " << v.detail << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace ncinterp::checker
