@@ -18,18 +18,19 @@ module block_buffer #(
   output logic [Width-1:0] out_block_o
 );
 
-  // full_q: a block is waiting; block_q: that block.
+  // full_q: a block is waiting; block_q: that block (loaded only when one is taken).
   logic             full_q, full_d;
-  logic [Width-1:0] block_q, block_d;
+  logic [Width-1:0] block_q;
+  logic             take;
+
+  assign take = in_valid_i && !full_q;
 
   always_comb begin
-    full_d  = full_q;
-    block_d = block_q;
+    full_d = full_q;
     if (full_q) begin
       if (pop_i) full_d = 1'b0;
     end else if (in_valid_i) begin
-      full_d  = 1'b1;
-      block_d = in_block_i;
+      full_d = 1'b1;
     end
   end
 
@@ -38,8 +39,8 @@ module block_buffer #(
       full_q  <= 1'b0;
       block_q <= '0;
     end else begin
-      full_q  <= full_d;
-      block_q <= block_d;
+      full_q <= full_d;
+      if (take) block_q <= in_block_i;
     end
   end
 

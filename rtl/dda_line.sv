@@ -35,13 +35,14 @@ module dda_line #(
   logic [IncWidth:0] kpow_load;
   logic              iterate;
 
-  assign kpow_load = (IncWidth + 1)'(1) << k_i;
-  assign iterate   = strobe_i && rem_q != '0;
+  assign iterate = strobe_i && rem_q != '0;
 
   always_comb begin
-    kpow_d = kpow_q;
-    rem_d  = rem_q;
+    kpow_load = '0;
+    kpow_d    = kpow_q;
+    rem_d     = rem_q;
     if (load_i) begin
+      kpow_load = (IncWidth + 1)'(1) << k_i;
       kpow_d = kpow_load;
       rem_d  = kpow_load;
     end else if (iterate) begin

@@ -30,6 +30,10 @@ module feed_generator #(
                                                                            : ModulusWidth;
   localparam int unsigned PhaseWidth = SumWidth + 1;
 
+  // modulus_q: feed_modulus_i registered (static configuration; registered so that no
+  // logic depends on an input combinationally). Valid from the first clock after reset,
+  // long before the first block can load.
+  logic [ModulusWidth-1:0] modulus_q;
   // step_q: S = F << k of the playing block. phase_q: accumulated feed, always < M when
   // not saturated. saturated_q: S >= M, one iteration per clock.
   logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
@@ -39,8 +43,8 @@ module feed_generator #(
   logic                  reached;
 
   always_comb begin
-    modulus   = PhaseWidth'(modulus_i);
-    step_load = PhaseWidth'(feed_i) << k_i;
+    modulus   = PhaseWidth'(modulus_q);
+    step_load = '0;
     sum       = phase_q + step_q;
     reached   = sum >= modulus;
     strobe_o  = run_i & (saturated_q | reached);
@@ -49,6 +53,7 @@ module feed_generator #(
     phase_d     = phase_q;
     saturated_d = saturated_q;
     if (load_i) begin
+      step_load   = PhaseWidth'(feed_i) << k_i;
       step_d      = step_load;
       phase_d     = step_load;
       saturated_d = step_load >= modulus;
@@ -59,10 +64,12 @@ module feed_generator #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      modulus_q   <= '0;
       step_q      <= '0;
       phase_q     <= '0;
       saturated_q <= 1'b0;
     end else begin
+      modulus_q   <= modulus_i;
       step_q      <= step_d;
       phase_q     <= phase_d;
       saturated_q <= saturated_d;

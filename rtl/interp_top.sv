@@ -53,8 +53,9 @@ module interp_top #(
 );
 
   localparam int unsigned KWidth = $clog2(IncWidth + 1);
-  // A decoded block as the buffer stores it: N, motion, dx, dy, i, j (sign + magnitude), F.
-  localparam int unsigned BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + FeedWidth;
+  // A decoded block as the buffer stores it: N, motion, dx, dy, i, j (sign + magnitude), F,
+  // and the DDA's k.
+  localparam int unsigned BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + FeedWidth + KWidth;
 
   // Decoder -> buffer.
   logic                   dec_valid, buf_ready;
@@ -63,7 +64,8 @@ module interp_top #(
   logic [IncWidth-1:0]    dec_dx, dec_dy, dec_i, dec_j;
   logic                   dec_dx_neg, dec_dy_neg, dec_i_neg, dec_j_neg;
   logic [FeedWidth-1:0]   dec_feed;
-  logic                   dec_end, dec_err;
+  logic [KWidth-1:0]      dec_k;
+  logic                   dec_end, dec_tape_ended, dec_err;
   logic [3:0]             dec_err_code;
   logic [SeqWidth-1:0]    dec_err_block;
   logic [OffsetWidth-1:0] dec_err_offset;
@@ -75,6 +77,7 @@ module interp_top #(
   logic [IncWidth-1:0]    next_dx, next_dy;
   logic                   next_dx_neg, next_dy_neg;
   logic [FeedWidth-1:0]   next_feed;
+  logic [KWidth-1:0]      next_k;
   // Motion, I and J travel with the block for circle mode (next issue); lines ignore them.
   /* verilator lint_off UNUSEDSIGNAL */
   logic [1:0]             next_motion;
@@ -84,7 +87,6 @@ module interp_top #(
 
   // Player.
   logic              load, strobe, rem_zero, saturated, carry_x, carry_y;
-  logic [KWidth-1:0] load_k;
 
   // busy_q: a block is loaded and not finished. block_n_q: its N (the last one when idle).
   // done_q / error_q: the machine has stopped at the end of the program / on a tape error.
@@ -101,8 +103,8 @@ module interp_top #(
     .blk_n_o(dec_n), .blk_motion_o(dec_motion),
     .blk_dx_o(dec_dx), .blk_dx_neg_o(dec_dx_neg), .blk_dy_o(dec_dy), .blk_dy_neg_o(dec_dy_neg),
     .blk_i_o(dec_i), .blk_i_neg_o(dec_i_neg), .blk_j_o(dec_j), .blk_j_neg_o(dec_j_neg),
-    .blk_feed_o(dec_feed),
-    .end_o(dec_end), .err_o(dec_err), .err_code_o(dec_err_code),
+    .blk_feed_o(dec_feed), .blk_k_o(dec_k),
+    .end_o(dec_end), .tape_ended_o(dec_tape_ended), .err_o(dec_err), .err_code_o(dec_err_code),
     .err_block_o(dec_err_block), .err_offset_o(dec_err_offset)
   );
 
@@ -110,33 +112,29 @@ module interp_top #(
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i({dec_n, dec_motion, dec_dx_neg, dec_dx, dec_dy_neg, dec_dy,
-                 dec_i_neg, dec_i, dec_j_neg, dec_j, dec_feed}),
+                 dec_i_neg, dec_i, dec_j_neg, dec_j, dec_feed, dec_k}),
     .pop_i(load),
     .out_valid_o(next_valid), .out_block_o(next_block)
   );
 
   assign {next_n, next_motion, next_dx_neg, next_dx, next_dy_neg, next_dy,
-          next_i_neg, next_i, next_j_neg, next_j, next_feed} = next_block;
+          next_i_neg, next_i, next_j_neg, next_j, next_feed, next_k} = next_block;
 
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || rem_zero);
-
-  bit_length #(.Width(IncWidth), .LengthWidth(KWidth)) u_block_k (
-    .value_i(next_dx | next_dy), .length_o(load_k)
-  );
 
   feed_generator #(
     .FeedWidth(FeedWidth), .IncWidth(IncWidth), .ModulusWidth(ModulusWidth), .KWidth(KWidth)
   ) u_feed (
     .clk_i, .rst_ni,
-    .load_i(load), .feed_i(next_feed), .k_i(load_k),
+    .load_i(load), .feed_i(next_feed), .k_i(next_k),
     .run_i(busy_q && !rem_zero), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
   );
 
   dda_line #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dda (
     .clk_i, .rst_ni,
-    .load_i(load), .k_i(load_k),
+    .load_i(load), .k_i(next_k),
     .dx_i(next_dx), .dx_neg_i(next_dx_neg), .dy_i(next_dy), .dy_neg_i(next_dy_neg),
     .strobe_i(strobe),
     .carry_x_o(carry_x), .carry_y_o(carry_y),
@@ -163,7 +161,7 @@ module interp_top #(
       busy_d = 1'b0;  // finished with no next block: a gap (or the end)
     end
     error_d = error_q | (dec_err & !busy_q & !next_valid);
-    done_d  = done_q | (dec_end & tape_end_i & !busy_q & !next_valid);
+    done_d  = done_q | (dec_end & dec_tape_ended & !busy_q & !next_valid);
   end
 
   always_ff @(posedge clk_i) begin

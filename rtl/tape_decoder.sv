@@ -7,10 +7,13 @@
 // (or the previous one) and the frame's offset; the error is only reported by interp_top
 // once every good block has played.
 //
-// Timing: a frame taken at edge e (frame_valid_i & frame_ready_o) is fully processed at e.
-// The LF of a motion block puts the decoder in HOLD from e; the block buffer takes the
-// block at the first edge where it is empty (blk_ready_i), after which frame_ready_o is
-// high again. tape_end_i with no frame taken in LEADER/BODY/COMMENT is a truncated tape.
+// Timing: the reader's signals are registered first (so no logic depends on an input
+// combinationally): a frame taken at edge e (frame_valid_i & frame_ready_o) lands in the
+// input register and is processed at edge e+1, while the next frame may be taken. The LF
+// of a motion block puts the decoder in HOLD; the block buffer takes the block at the first
+// edge where it is empty (blk_ready_i). frame_ready_o is low while the input register is
+// full and cannot be processed at the next edge (HOLD), and after an error. tape_end_i
+// (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
   // Increment register width W: |X|, |Y|, |I|, |J| <= 2^IncWidth - 1 BLU.
@@ -46,8 +49,11 @@ module tape_decoder #(
   output logic [IncWidth-1:0]    blk_j_o,
   output logic                   blk_j_neg_o,
   output logic [FeedWidth-1:0]   blk_feed_o,
+  output logic [$clog2(IncWidth+1)-1:0] blk_k_o,  // the line DDA's k for this block
   // End of program decoded and its last block handed over; trailing frames are checked.
   output logic                   end_o,
+  // The reader has delivered every frame (tape_end_i, registered).
+  output logic                   tape_ended_o,
   // An error is held (the decoder has stopped).
   output logic                   err_o,
   output logic [3:0]             err_code_o,
@@ -66,6 +72,7 @@ module tape_decoder #(
   localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
   localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
   localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
+  localparam int unsigned KWidth = $clog2(IncWidth + 1);
   localparam logic [3:0] FracCount     = 4'(FracDigits);
   localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
 
@@ -124,6 +131,10 @@ module tape_decoder #(
   } num_e;
 
   state_e state_q, state_d;
+  // Input register: in_frame_q is a frame taken from the reader and not processed yet
+  // (in_valid_q); tape_end_q is tape_end_i one clock late; ready_q is frame_ready_o.
+  logic [7:0] in_frame_q, in_frame_d;
+  logic       in_valid_q, in_valid_d, tape_end_q, ready_q, ready_d;
   // Offset of the next frame: the offset reported for an error in the frame being taken.
   logic [OffsetWidth-1:0] frame_count_q, frame_count_d;
 
@@ -144,6 +155,9 @@ module tape_decoder #(
   logic [IncWidth-1:0]  dx_q, dx_d, dy_q, dy_d, i_q, i_d, j_q, j_d;
   logic                 dx_neg_q, dx_neg_d, dy_neg_q, dy_neg_d;
   logic                 i_neg_q, i_neg_d, j_neg_q, j_neg_d;
+  // k of the held block: bit length of (|dx| | |dy|) = bit length of max(|dx|, |dy|); the
+  // line DDA runs 2^k iterations. Computed at the LF, so the player does not have to.
+  logic [KWidth-1:0]    k_q, k_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
   // a motion G); the block ends the program (M02/M30).
   logic n_seen_q, n_seen_d, any_word_q, any_word_d;
@@ -155,7 +169,8 @@ module tape_decoder #(
   logic [OffsetWidth-1:0] err_offset_q, err_offset_d;
 
   // Combinational helpers.
-  logic                   take;         // a frame is taken at this edge
+  logic                   take;         // the frame in the input register is processed
+  logic                   tape_cut;     // truncated tape found at this edge
   logic [6:0]             ch;           // its character
   logic                   fail;         // an error is found at this edge
   logic [3:0]             fail_code;
@@ -165,24 +180,19 @@ module tape_decoder #(
   logic [3:0]             frac_limit;
   logic [WideWidth-1:0]   limit, num_next;
 
-  assign take = frame_valid_i & frame_ready_o;
-  assign ch   = frame_i[6:0];
+  // Bit length of a value (position of its highest 1 plus one; 0 for 0).
+  function automatic logic [KWidth-1:0] bit_length(input logic [IncWidth-1:0] value);
+    bit_length = '0;
+    for (int unsigned b = 0; b < IncWidth; b++) begin
+      if (value[b]) bit_length = KWidth'(b + 1);
+    end
+  endfunction
 
-  // Properties of the word being read.
-  always_comb begin
-    signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
-    fractional_word = signed_word || word_q == WordF;
-    frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
-    unique case (word_q)
-      WordN:        limit = SeqLimit;
-      WordG, WordM: limit = CodeLimit;
-      WordF:        limit = FeedLimit;
-      default:      limit = IncLimit;
-    endcase
-    word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
-                                    : (num_state_q == NumInt);
-    num_next = {num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(ch[3:0]);  // num*10 + digit
-  end
+  assign take = in_valid_q && state_q != StHold && state_q != StError;
+  // The reader has delivered every frame, none waits, and the program has not ended.
+  assign tape_cut = tape_end_q && !in_valid_q &&
+                    (state_q == StLeader || state_q == StBody || state_q == StComment);
+  assign ch   = in_frame_q[6:0];
 
   always_comb begin
     state_d       = state_q;
@@ -207,14 +217,34 @@ module tape_decoder #(
     err_code_d    = err_code_q;
     err_block_d   = err_block_q;
     err_offset_d  = err_offset_q;
+    k_d           = k_q;
     fail          = 1'b0;
     fail_code     = ErrParity;
     fail_offset   = frame_count_q;
     word_ok       = 1'b1;
+    signed_word     = 1'b0;
+    fractional_word = 1'b0;
+    frac_limit      = FracCount;
+    limit           = IncLimit;
+    word_complete   = 1'b0;
+    num_next        = '0;
 
     if (take) begin
       frame_count_d = frame_count_q + 1'b1;
-      if (^frame_i) begin
+      // Properties of the word being read (computed only when a frame is processed).
+      signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
+      fractional_word = signed_word || word_q == WordF;
+      frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
+      unique case (word_q)
+        WordN:        limit = SeqLimit;
+        WordG, WordM: limit = CodeLimit;
+        WordF:        limit = FeedLimit;
+        default:      limit = IncLimit;
+      endcase
+      word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
+                                      : (num_state_q == NumInt);
+      num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(ch[3:0]);  // *10 + d
+      if (^in_frame_q) begin
         fail = 1'b1;  // odd parity
       end else begin
         unique case (state_q)
@@ -348,6 +378,7 @@ module tape_decoder #(
                       fail_code = ErrMissingFeed;
                     end else begin
                       state_d = StHold;  // cleared at the handoff
+                      k_d = bit_length(dx_d | dy_d);
                     end
                   end else begin
                     if (end_blk_d) state_d = StEnd;
@@ -377,8 +408,7 @@ module tape_decoder #(
         dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
         dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
       end
-    end else if (tape_end_i &&
-                 (state_q == StLeader || state_q == StBody || state_q == StComment)) begin
+    end else if (tape_cut) begin
       fail = 1'b1;
       fail_code = ErrTruncated;  // at the offset of the frame that never came
     end
@@ -391,9 +421,31 @@ module tape_decoder #(
     end
   end
 
+  // Input register: a new frame is taken while the previous one is processed. Kept apart
+  // from the parser above, which then depends on registers only (a simulator re-evaluates
+  // input-dependent logic on every input change).
+  always_comb begin
+    in_frame_d = in_frame_q;
+    in_valid_d = in_valid_q && !take;
+    if (frame_valid_i && ready_q) begin
+      in_frame_d = frame_i;
+      in_valid_d = 1'b1;
+    end
+    ready_d = state_d != StError && !(state_d == StHold && in_valid_d);
+  end
+
+  // The parser's registers change only when a frame is processed, a held block is handed
+  // over or the tape has ended (update); the input register changes every clock.
+  logic update;
+  assign update = take || state_q == StHold || tape_cut;
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       state_q       <= StLeader;
+      in_frame_q    <= '0;
+      in_valid_q    <= 1'b0;
+      tape_end_q    <= 1'b0;
+      ready_q       <= 1'b1;
       frame_count_q <= '0;
       word_q        <= WordNone;
       num_state_q   <= NumStart;
@@ -408,6 +460,7 @@ module tape_decoder #(
       dy_q <= '0;  dy_neg_q <= 1'b0;
       i_q  <= '0;  i_neg_q  <= 1'b0;
       j_q  <= '0;  j_neg_q  <= 1'b0;
+      k_q           <= '0;
       n_seen_q      <= 1'b0;
       any_word_q    <= 1'b0;
       motion_blk_q  <= 1'b0;
@@ -416,32 +469,39 @@ module tape_decoder #(
       err_block_q   <= '0;
       err_offset_q  <= '0;
     end else begin
-      state_q       <= state_d;
-      frame_count_q <= frame_count_d;
-      word_q        <= word_d;
-      num_state_q   <= num_state_d;
-      num_q         <= num_d;
-      neg_q         <= neg_d;
-      frac_count_q  <= frac_count_d;
-      word_offset_q <= word_offset_d;
-      n_q           <= n_d;
-      motion_q      <= motion_d;
-      feed_q        <= feed_d;
-      dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
-      dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
-      i_q  <= i_d;   i_neg_q  <= i_neg_d;
-      j_q  <= j_d;   j_neg_q  <= j_neg_d;
-      n_seen_q      <= n_seen_d;
-      any_word_q    <= any_word_d;
-      motion_blk_q  <= motion_blk_d;
-      end_blk_q     <= end_blk_d;
-      err_code_q    <= err_code_d;
-      err_block_q   <= err_block_d;
-      err_offset_q  <= err_offset_d;
+      in_frame_q    <= in_frame_d;
+      in_valid_q    <= in_valid_d;
+      tape_end_q    <= tape_end_i;
+      ready_q       <= ready_d;
+      if (update) begin
+        state_q       <= state_d;
+        frame_count_q <= frame_count_d;
+        word_q        <= word_d;
+        num_state_q   <= num_state_d;
+        num_q         <= num_d;
+        neg_q         <= neg_d;
+        frac_count_q  <= frac_count_d;
+        word_offset_q <= word_offset_d;
+        n_q           <= n_d;
+        motion_q      <= motion_d;
+        feed_q        <= feed_d;
+        dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
+        dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
+        i_q  <= i_d;   i_neg_q  <= i_neg_d;
+        j_q  <= j_d;   j_neg_q  <= j_neg_d;
+        k_q           <= k_d;
+        n_seen_q      <= n_seen_d;
+        any_word_q    <= any_word_d;
+        motion_blk_q  <= motion_blk_d;
+        end_blk_q     <= end_blk_d;
+        err_code_q    <= err_code_d;
+        err_block_q   <= err_block_d;
+        err_offset_q  <= err_offset_d;
+      end
     end
   end
 
-  assign frame_ready_o = state_q != StHold && state_q != StError;
+  assign frame_ready_o = ready_q;
   assign blk_valid_o   = state_q == StHold;
   assign blk_n_o       = n_q;
   assign blk_motion_o  = motion_q;
@@ -454,7 +514,9 @@ module tape_decoder #(
   assign blk_j_o       = j_q;
   assign blk_j_neg_o   = j_neg_q;
   assign blk_feed_o    = feed_q;
+  assign blk_k_o       = k_q;
   assign end_o         = state_q == StEnd;
+  assign tape_ended_o  = tape_end_q;
   assign err_o         = state_q == StError;
   assign err_code_o    = err_code_q;
   assign err_block_o   = err_block_q;

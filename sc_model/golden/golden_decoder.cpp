@@ -22,6 +22,10 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
 
 void GoldenTapeDecoder::reset() {
   state_ = State::kLeader;
+  in_frame_ = 0;
+  in_valid_ = false;
+  tape_end_q_ = false;
+  ready_ = true;
   frame_count_ = 0;
   word_ = Word::kNone;
   num_state_ = Num::kStart;
@@ -38,7 +42,26 @@ void GoldenTapeDecoder::reset() {
   err_offset_ = 0;
 }
 
-void GoldenTapeDecoder::take_frame(uint8_t frame) {
+void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
+  const bool process = in_valid_ && state_ != State::kHold && state_ != State::kError;
+  if (process) {
+    process_frame(in_frame_);
+  } else if (state_ == State::kHold) {
+    if (buffer_empty) handoff();
+  } else if (tape_end_q_ && !in_valid_ && state_ <= State::kComment) {
+    fail(TapeError::kTruncatedTape, frame_count_);  // the frame that never came
+  }
+  // Input register: a new frame is taken while the previous one is processed.
+  in_valid_ = in_valid_ && !process;
+  if (in.frame_valid && ready_) {
+    in_frame_ = in.frame;
+    in_valid_ = true;
+  }
+  tape_end_q_ = in.tape_end;
+  ready_ = state_ != State::kError && !(state_ == State::kHold && in_valid_);
+}
+
+void GoldenTapeDecoder::process_frame(uint8_t frame) {
   const uint32_t offset = frame_count_;
   frame_count_ = (frame_count_ + 1) & offset_mask_;
   if (odd_parity(frame)) return fail(TapeError::kParity, offset);
@@ -58,7 +81,7 @@ void GoldenTapeDecoder::take_frame(uint8_t frame) {
       return body_character(c, offset);
     case State::kHold:
     case State::kError:
-      return;  // not ready: the caller never hands a frame over in these states
+      return;  // edge() does not process a frame in these states
   }
 }
 

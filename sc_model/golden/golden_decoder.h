@@ -1,8 +1,8 @@
 // Tape decoder of the golden model: the C++ twin of rtl/tape_decoder.sv.
 // Idea: frames -> words -> one decoded motion block at a time, with the same registers and
-// the same next-state rules as the RTL (docs/interpolator.md, section 3). It is called only
-// on clocks where something happens (a frame is taken, the tape has ended, the block
-// buffer takes the held block), so it stays off the golden model's hot path.
+// the same next-state rules as the RTL (docs/interpolator.md, section 3), including the
+// input register in front of the parser. edge() is called only on clocks where something
+// happens (quiet() is false), so the decoder stays off the golden model's hot path.
 #pragma once
 #include <cstdint>
 
@@ -28,20 +28,19 @@ class GoldenTapeDecoder {
   explicit GoldenTapeDecoder(const InterpConfig& cfg);
 
   void reset();
-  // One frame taken (valid & ready at this edge).
-  void take_frame(uint8_t frame);
-  // An edge with no frame taken while tape_end is high.
-  void tape_ended() {
-    if (state_ <= State::kComment)
-      fail(TapeError::kTruncatedTape, frame_count_);
+  // Nothing would change at this edge: no frame offered or waiting, no block held, and
+  // tape_end neither changing nor ending the tape early.
+  bool quiet(const InterpInputs& in) const {
+    return !in.frame_valid && !in_valid_ && state_ != State::kHold &&
+           in.tape_end == tape_end_q_ && !(tape_end_q_ && state_ <= State::kComment);
   }
-  // The block buffer takes the held block at this edge (state is kHold).
-  void handoff();
+  // One rising edge. buffer_empty: the block buffer can take a held block at this edge
+  // (the caller copies block() into the buffer first).
+  void edge(const InterpInputs& in, bool buffer_empty);
 
   State state() const { return state_; }
-  bool ready() const {
-    return state_ != State::kHold && state_ != State::kError;
-  }
+  bool ready() const { return ready_; }
+  bool tape_ended() const { return tape_end_q_; }
   const DecodedBlock& block() const { return block_; }
   TapeError error_code() const { return err_code_; }
   uint32_t error_block() const { return err_block_; }
@@ -51,6 +50,8 @@ class GoldenTapeDecoder {
   enum class Word : uint8_t { kNone, kN, kG, kM, kX, kY, kI, kJ, kF };
   enum class Num : uint8_t { kStart, kSigned, kInt, kFrac };
 
+  void process_frame(uint8_t frame);
+  void handoff();
   void body_character(char c, uint32_t offset);
   void digit(unsigned d, uint32_t offset);
   void sign(bool negative, uint32_t offset);
@@ -69,6 +70,11 @@ class GoldenTapeDecoder {
   uint32_t offset_mask_;
 
   State state_ = State::kLeader;
+  // Input register: a frame taken from the reader, processed at the next edge.
+  uint8_t in_frame_ = 0;
+  bool in_valid_ = false;
+  bool tape_end_q_ = false;  // tape_end one clock late
+  bool ready_ = true;        // frame_ready (a register)
   uint32_t frame_count_ = 0;  // offset of the next frame
   // Word being read.
   Word word_ = Word::kNone;

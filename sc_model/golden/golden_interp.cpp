@@ -74,29 +74,22 @@ void GoldenInterp::load_block() {
 }
 
 void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {
-  using State = GoldenTapeDecoder::State;
-  if (in.frame_valid && decoder_.ready()) {
-    decoder_.take_frame(in.frame);
-  } else if (decoder_.state() == State::kHold) {
-    if (buffer_empty) {
-      next_ = decoder_.block();
-      next_valid_ = true;
-      decoder_.handoff();
-    }
-  } else if (in.tape_end) {
-    decoder_.tape_ended();
+  if (decoder_.state() == GoldenTapeDecoder::State::kHold && buffer_empty) {
+    next_ = decoder_.block();  // the buffer takes the held block at this edge
+    next_valid_ = true;
   }
+  decoder_.edge(in, buffer_empty);
   out_.frame_ready = decoder_.ready();
 }
 
-void GoldenInterp::status_edge(bool tape_end) {
+void GoldenInterp::status_edge() {
   using State = GoldenTapeDecoder::State;
   if (decoder_.state() == State::kError && !out_.error) {
     out_.error = true;
     out_.error_code = static_cast<uint8_t>(decoder_.error_code());
     out_.error_block = decoder_.error_block();
     out_.error_offset = decoder_.error_offset();
-  } else if (decoder_.state() == State::kEnd && tape_end) {
+  } else if (decoder_.state() == State::kEnd && decoder_.tape_ended()) {
     out_.done = true;
   }
 }

@@ -43,7 +43,7 @@ class GoldenInterp {
  private:
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
-  void status_edge(bool tape_end);          // done / error when the player is empty
+  void status_edge();                       // done / error when the player is empty
   void fault_edge();           // the injected fault acts at this cycle
   int64_t wrap_position(int64_t p) const {
     const uint64_t u = static_cast<uint64_t>(p) & pos_mask_;
@@ -51,7 +51,9 @@ class GoldenInterp {
   }
 
   InterpConfig cfg_;
-  uint64_t modulus_;   // feed_modulus_i, ModulusWidth bits
+  // feed_modulus_i, ModulusWidth bits. The RTL registers it (modulus_q), which equals this
+  // constant from the first clock on; no block can load before the fourth clock.
+  uint64_t modulus_;
   uint64_t pos_mask_, pos_sign_;
 
   GoldenTapeDecoder decoder_;
@@ -90,7 +92,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   const bool buffer_empty = !next_valid_;
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
-    status_edge(in.tape_end);
+    status_edge();
   const bool load = !buffer_empty && (!busy || finishing);
 
   out_.step_x = false;
@@ -121,10 +123,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     out_.feed_saturated = false;
   }
   if (load) load_block();
-  // Decoder and buffer input: a frame taken, a held block handed over, or the tape ended.
-  if ((in.frame_valid && decoder_.ready()) || dstate == State::kHold ||
-      (in.tape_end && dstate <= State::kComment))
-    frame_edge(in, buffer_empty);
+  if (!decoder_.quiet(in)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
 }
 

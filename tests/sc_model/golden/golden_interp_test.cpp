@@ -114,8 +114,9 @@ TEST(GoldenInterp, ZeroMoveIsADwellOfOneOverF) {
   EXPECT_TRUE(rec.pulses.empty());
 }
 
-// Handshake and latency (docs 3.1, 3.3, 4): one frame per clock, ready low for one clock
-// after the LF of a motion block, block loaded two edges after its LF.
+// Handshake and latency (docs 3.1, 3.3, 4): one frame per clock into the input register,
+// processed one edge later; after the LF of a motion block ready drops while a frame waits
+// behind the held block; the block loads three edges after its LF was taken.
 TEST(GoldenInterp, HandshakeAndBlockLatency) {
   const std::string text = "%\nN1 G01 X0.002 F100.000\nM02\n%\n";
   const size_t lf = text.find('\n', text.find("N1"));
@@ -132,13 +133,15 @@ TEST(GoldenInterp, HandshakeAndBlockLatency) {
     taken.push_back(source.frames_taken());
   }
   ASSERT_TRUE(dut.outputs().done);
-  // Frame i is taken at edge i + 1 up to the LF, which is taken at edge lf + 1.
-  for (size_t i = 0; i <= lf; ++i) EXPECT_EQ(taken[i + 1], i + 1);
-  EXPECT_FALSE(ready[lf + 1]);
-  EXPECT_TRUE(ready[lf + 2]);
-  EXPECT_FALSE(busy[lf + 2]);
-  EXPECT_TRUE(busy[lf + 3]);  // LF at edge e, buffer at e+1, load at e+2
-  EXPECT_EQ(taken[lf + 3], lf + 2);  // the next frame waited one clock
+  // Frame i is taken at edge i + 1 up to the frame after the LF (taken at edge lf + 2).
+  for (size_t i = 0; i <= lf + 1; ++i) EXPECT_EQ(taken[i + 1], i + 1);
+  EXPECT_TRUE(ready[lf + 1]);
+  EXPECT_FALSE(ready[lf + 2]);  // LF processed at lf + 2: HOLD with a frame waiting
+  EXPECT_TRUE(ready[lf + 3]);   // handed to the buffer at lf + 3
+  EXPECT_EQ(taken[lf + 3], lf + 2);
+  EXPECT_EQ(taken[lf + 4], lf + 3);
+  EXPECT_FALSE(busy[lf + 3]);
+  EXPECT_TRUE(busy[lf + 4]);  // LF taken at e, processed e+1, buffer e+2, load e+3
 }
 
 TEST(GoldenInterp, BlocksFollowWithoutGapsWhenTheReaderIsFast) {
@@ -175,7 +178,7 @@ TEST(GoldenInterp, SlowReaderLeavesObservableGaps) {
   }
   ASSERT_EQ(rec.starts.size(), 2u);
   EXPECT_GT(gap, 0u);
-  EXPECT_EQ(rec.starts[1].cycle, lf2_taken + 2);
+  EXPECT_EQ(rec.starts[1].cycle, lf2_taken + 3);
   EXPECT_TRUE(check_line_program(prog, rec));
 }
 
