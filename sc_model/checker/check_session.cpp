@@ -101,7 +101,11 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   out.checker = std::make_unique<TrajectoryChecker>(std::move(blocks), out.reference.get(), co);
 
   TrajectoryChecker& checker = *out.checker;
-  auto observe = [&checker](uint64_t cycle, const InterpOutputs& o) { checker.observe(cycle, o); };
+  const auto& progress = setup.progress;
+  auto observe = [&checker, &progress, budget](uint64_t cycle, const InterpOutputs& o) {
+    checker.observe(cycle, o);
+    if ((cycle & ((uint64_t{1} << 22) - 1)) == 0 && progress) progress(cycle, budget);
+  };
   FrameSource source(frames, cpf);
   const auto t0 = std::chrono::steady_clock::now();
   if (setup.engine == EngineKind::kGolden) {

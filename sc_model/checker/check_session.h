@@ -5,6 +5,7 @@
 // reader (the caller passes it in), the pulses from the golden model or the verilated RTL.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -39,6 +40,8 @@ struct CheckSetup {
   uint64_t max_cycles = 0;         // 0: enough for the program (estimated from the tape)
   // Golden engine only: a fault injected through the model's test hook.
   std::optional<GoldenInterp::Fault> fault;
+  // Called every 2^22 clocks with (clocks so far, clock budget): progress display.
+  std::function<void(uint64_t, uint64_t)> progress;
 };
 
 struct CheckOutcome {

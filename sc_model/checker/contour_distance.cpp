@@ -11,6 +11,9 @@ namespace {
 using firststage::SegmentKind;
 
 Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + t * (b - a); }
+// sqrt(x^2 + y^2) without std::hypot's overflow care: the checker's coordinates are BLU
+// (|x| < 2^40), far from overflow, and hypot is several times slower.
+double length(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 Vec2 mid(Vec2 a, Vec2 b) { return 0.5 * (a + b); }
 
 // A sub-piece of a cubic in Bezier form over [u0, u1] of the segment's parameter.
@@ -47,13 +50,13 @@ double distance_to_segment(Vec2 q, Vec2 a, Vec2 b, double* t_out) {
   double t = l2 > 0 ? dot(q - a, v) / l2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
   if (t_out) *t_out = t;
-  return norm(q - (a + t * v));
+  return length(q - (a + t * v));
 }
 
-double ContourDistance::Box::distance(Vec2 q) const {
+double ContourDistance::Box::distance_sq(Vec2 q) const {
   const double dx = std::max({x0 - q.x, 0.0, q.x - x1});
   const double dy = std::max({y0 - q.y, 0.0, q.y - y1});
-  return std::hypot(dx, dy);
+  return dx * dx + dy * dy;
 }
 
 ContourDistance::ContourDistance(std::vector<Segment> segments) : segments_(std::move(segments)) {
@@ -95,7 +98,7 @@ ContourFoot ContourDistance::nearest(Vec2 q) const {
   search(first, q, best);
   for (int s = 0; s < n; ++s) {
     if (s == first) continue;
-    if (pieces_[s].box.distance(q) >= best.distance) continue;
+    if (pieces_[s].box.distance_sq(q) >= best.distance * best.distance) continue;
     search(s, q, best);
   }
   hint_ = best.segment;
@@ -128,9 +131,10 @@ void ContourDistance::search_arc(int s, Vec2 q, ContourFoot& best) const {
   const Vec2 c = seg.centre();
   const double r = seg.radius(), sweep = seg.sweep();
   const Vec2 v = q - c;
+  const double rq = length(v);
   double u = 0.0;
   bool inside = false;
-  if (norm(v) > 0) {
+  if (rq > 0) {
     // Angle of q from the arc's start, measured in the sweep's sense.
     double a = wrap_angle(std::atan2(v.y, v.x) - seg.start_angle());
     if (sweep < 0) a = -a;
@@ -142,13 +146,13 @@ void ContourDistance::search_arc(int s, Vec2 q, ContourFoot& best) const {
     }
   }
   if (inside) {
-    const double d = std::fabs(norm(v) - r);
+    const double d = std::fabs(rq - r);
     if (d < best.distance) best = {d, s, u, seg.point(u)};
     return;
   }
   for (double ue : {0.0, 1.0}) {
     const Vec2 p = seg.point(ue);
-    const double d = norm(q - p);
+    const double d = length(q - p);
     if (d < best.distance) best = {d, s, ue, p};
   }
 }
@@ -170,7 +174,7 @@ void ContourDistance::search_cubic(int s, Vec2 q, ContourFoot& best) const {
     const double lower = dc - w;
     if (lower >= best.distance - kDistanceAccuracy) continue;  // cannot improve enough
     const Vec2 p = bezier_point(z, t);
-    const double d = norm(q - p);
+    const double d = length(q - p);
     if (d < best.distance) best = {d, s, z.u0 + t * (z.u1 - z.u0), p};
     if (best.distance - lower <= kDistanceAccuracy) continue;  // bracket narrow enough
     if (z.u1 - z.u0 < 1e-14 || top + 2 > 128) continue;       // numerical floor

@@ -48,7 +48,7 @@ class ContourDistance {
  private:
   struct Box {
     double x0, y0, x1, y1;
-    double distance(Vec2 q) const;
+    double distance_sq(Vec2 q) const;  // squared distance from q (0 inside)
   };
   struct Piece {
     Box box;
