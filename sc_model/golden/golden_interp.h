@@ -37,6 +37,8 @@ class GoldenInterp {
   const InterpOutputs& outputs() const { return out_; }
   const InterpConfig& config() const { return cfg_; }
   uint64_t cycle() const { return cycle_; }
+  // Motion blocks loaded into the player since reset (for statistics and monitors).
+  uint64_t blocks_loaded() const { return loads_; }
 
   void inject(const Fault& fault);
 

@@ -204,87 +204,15 @@ TEST(GoldenInterp, LeaderCommentsSpacesAndSignsAreAccepted) {
   EXPECT_TRUE(check_line_program({{1, 3, -2, 1000000}, {2, 0, 0, 1000000}}, rec));
 }
 
-// Bad tapes: the error names the bad block (its own N if read, else the previous one) and
-// the offending frame; the good blocks before it play completely; nothing of the bad one.
-struct BadTape {
-  const char* name;
-  std::string text;
-  TapeError code;
-  uint32_t block;
-  size_t offset;
-  std::vector<LineBlock> good;
-};
-
-void PrintTo(const BadTape& t, std::ostream* os) { *os << t.name; }
-
-std::vector<BadTape> bad_tapes() {
-  const std::string head = "%\nG17 G21 G91 G93\nN10 G01 X0.005 Y-0.003 F100000.000\n";
-  const std::vector<LineBlock> good = {{10, 5, -3, 100000000}};
-  std::vector<BadTape> t;
-  auto at = [&](const std::string& text, const std::string& what, size_t from = 0) {
-    return text.find(what, from);
-  };
-  std::string s;
-  s = head + "N20 G01 X0.007 Y0.002\nM02\n%\n";
-  t.push_back({"parity", s, TapeError::kParity, 20, at(s, "7 Y"), good});
-  s = head + "N20 G01 Q0.007\nM02\n%\n";
-  t.push_back({"unknown_letter", s, TapeError::kUnknownCharacter, 20, at(s, "Q"), good});
-  s = head + "N20 G01 X65.536\nM02\n%\n";
-  t.push_back({"too_wide", s, TapeError::kValueTooWide, 20, at(s, "536") + 2, good});
-  s = head + "N20 G01 X0.001 N30 G01 X0.002\nM02\n%\n";
-  t.push_back({"missing_eob", s, TapeError::kMissingEndOfBlock, 20, at(s, "N30"), good});
-  s = head + "N20 G01 X0.0";
-  t.push_back({"truncated", s, TapeError::kTruncatedTape, 20, s.size(), good});
-  s = head + "M02\nN30 X0.001\n%\n";
-  t.push_back({"after_end", s, TapeError::kBlockAfterEnd, 10, at(s, "N30"), good});
-  s = head + "N20 G01 X1.00 Y0.000\nM02\n%\n";
-  t.push_back({"short_fraction", s, TapeError::kMalformedNumber, 20, at(s, "X1.00"), good});
-  s = head + "N20 G01 X1.0000\nM02\n%\n";
-  t.push_back({"long_fraction", s, TapeError::kMalformedNumber, 20, at(s, "0000", at(s, "N20")) + 3, good});
-  s = head + "N20 G01 X12\nM02\n%\n";
-  t.push_back({"no_point", s, TapeError::kMalformedNumber, 20, at(s, "X12"), good});
-  s = head + "N20 G01 X1-.000\nM02\n%\n";
-  t.push_back({"late_sign", s, TapeError::kMalformedNumber, 20, at(s, "-."), good});
-  s = head + "N20 G90 X1.000\nM02\n%\n";
-  t.push_back({"g90", s, TapeError::kUnsupportedCode, 20, at(s, "G90"), good});
-  s = head + "N20 G02 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
-  t.push_back({"g02_until_circle_mode", s, TapeError::kUnsupportedCode, 20, at(s, "G02"), good});
-  s = head + "N20 M00\nM02\n%\n";
-  t.push_back({"m00", s, TapeError::kUnsupportedCode, 20, at(s, "M00"), good});
-  s = head + "N1048576 X0.001\nM02\n%\n";
-  t.push_back({"n_too_wide", s, TapeError::kValueTooWide, 10, at(s, "1048576") + 6, good});
-  s = head + "N20 X0.001 F4294967.296\nM02\n%\n";
-  t.push_back({"f_too_wide", s, TapeError::kValueTooWide, 20, at(s, "4294967.296") + 10, good});
-  s = head + "N20 X0.001 %\n";
-  t.push_back({"percent_in_block", s, TapeError::kMissingEndOfBlock, 20, at(s, "%", 3), good});
-  s = head + "%\n";
-  t.push_back({"percent_before_end", s, TapeError::kTruncatedTape, 10, at(s, "%", 3), good});
-  s = "%\nG17 G21 G91 G93\nN10 G01 X0.005\nM02\n%\n";
-  t.push_back({"missing_feed", s, TapeError::kMissingFeed, 10, at(s, "\n", at(s, "N10")), {}});
-  s = head + "N20 X0.001 F0.000\nM02\n%\n";
-  t.push_back({"feed_zero", s, TapeError::kMissingFeed, 20, at(s, "\n", at(s, "N20")), good});
-  s = head + "N20 x0.001\nM02\n%\n";
-  t.push_back({"lower_case", s, TapeError::kUnknownCharacter, 20, at(s, "x"), good});
-  s = head + "N20 (spaces do not end a number, a comment does)5\nM02\n%\n";
-  t.push_back({"digit_without_letter", s, TapeError::kMalformedNumber, 20, at(s, ")5") + 1, good});
-  s = std::string("") + "";
-  t.push_back({"empty_tape", s, TapeError::kTruncatedTape, 0, 0, {}});
-  s = std::string("\0\0\0", 3) + "no program here";
-  t.push_back({"no_start", s, TapeError::kTruncatedTape, 0, s.size(), {}});
-  s = head + "N20 (never closed\nM02\n%\n";
-  t.push_back({"open_comment", s, TapeError::kTruncatedTape, 20, s.size(), good});
-  return t;
-}
+using test::BadTape;
 
 class GoldenBadTape : public ::testing::TestWithParam<BadTape> {};
 
 TEST_P(GoldenBadTape, StopsAtTheBlockBoundaryWithBlockAndOffset) {
   const BadTape& bad = GetParam();
-  std::vector<uint8_t> frames = frames_of(bad.text);
-  if (bad.code == TapeError::kParity) frames[bad.offset] ^= 0x80;
   GoldenInterp dut(test::config_for_clock(1e3));
   OutputRecorder rec;
-  const InterpOutputs out = run_golden(dut, frames, 1, kMaxCycles, rec);
+  const InterpOutputs out = run_golden(dut, bad.frames(), 1, kMaxCycles, rec);
   ASSERT_TRUE(out.error);
   EXPECT_FALSE(out.done);
   EXPECT_EQ(out.error_code, static_cast<uint8_t>(bad.code));
@@ -295,7 +223,7 @@ TEST_P(GoldenBadTape, StopsAtTheBlockBoundaryWithBlockAndOffset) {
   EXPECT_TRUE(check_line_program(bad.good, rec));
 }
 
-INSTANTIATE_TEST_SUITE_P(Tapes, GoldenBadTape, ::testing::ValuesIn(bad_tapes()),
+INSTANTIATE_TEST_SUITE_P(Tapes, GoldenBadTape, ::testing::ValuesIn(test::bad_tapes()),
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(GoldenInterp, ErrorRisesTwoClocksAfterTheLastGoodBlockFinishes) {
@@ -403,39 +331,11 @@ TEST(GoldenFault, FaultBeforeAnyBlockWaitsForABlock) {
   EXPECT_EQ(first_difference(clean, faulty), clean.rec.starts.at(0).cycle);
 }
 
-// Random line tapes: both signs, zero moves, moves of 2^W - 1, one and many blocks.
-// Feeds make each block last 1 .. 4 * 2^k + 8 clocks: a mix of saturated and
-// phase-accumulated blocks that keeps the runs short.
-std::vector<LineBlock> random_program(std::mt19937_64& rng, unsigned inc_width,
-                                      uint64_t modulus) {
-  const int64_t max = (int64_t{1} << inc_width) - 1;
-  std::uniform_int_distribution<int> nblocks(1, 8), kind(0, 9);
-  std::vector<LineBlock> prog;
-  const int n = nblocks(rng);
-  for (int i = 0; i < n; ++i) {
-    auto value = [&]() -> int64_t {
-      switch (kind(rng)) {
-        case 0: return 0;
-        case 1: return max;
-        case 2: return -max;
-        case 3: case 4: return std::uniform_int_distribution<int64_t>(-max, max)(rng);
-        default: return std::uniform_int_distribution<int64_t>(-300, 300)(rng);
-      }
-    };
-    LineBlock b{static_cast<uint32_t>(10 * (i + 1)), value(), value(), 0};
-    const uint64_t kpow = 1ull << bit_length(static_cast<uint64_t>(std::abs(b.dx) | std::abs(b.dy)));
-    const uint64_t clocks = std::uniform_int_distribution<uint64_t>(1, 4 * kpow + 8)(rng);
-    b.feed = std::min<uint64_t>(ceil_div(modulus, clocks), 0xffffffffull);
-    prog.push_back(b);
-  }
-  return prog;
-}
-
 TEST(GoldenRandom, LineTapesPlayExactlyWithinTheBound) {
   std::mt19937_64 rng(20240601);
   for (int t = 0; t < 100; ++t) {
     const InterpConfig cfg = test::config_for_clock(1e3);
-    const std::vector<LineBlock> prog = random_program(rng, 16, cfg.feed_modulus);
+    const std::vector<LineBlock> prog = test::random_line_program(rng, 16, cfg.feed_modulus);
     GoldenInterp dut(cfg);
     OutputRecorder rec;
     const InterpOutputs out =

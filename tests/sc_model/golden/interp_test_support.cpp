@@ -1,6 +1,7 @@
 // Test support: line tape text, output recorder, program checks (see the header).
 #include "interp_test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -9,6 +10,14 @@
 namespace ncinterp::test {
 
 namespace {
+
+uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
+
+unsigned bit_length(uint64_t x) {
+  unsigned k = 0;
+  while (x >> k) ++k;
+  return k;
+}
 
 std::string fixed(int64_t value, unsigned frac_digits) {
   int64_t scale = 1;
@@ -125,6 +134,104 @@ InterpOutputs run_golden(GoldenInterp& dut, const std::vector<uint8_t>& frames,
   }
   return dut.outputs();
 }
+
+std::vector<uint8_t> BadTape::frames() const {
+  std::vector<uint8_t> f = frames_of(text);
+  if (code == TapeError::kParity) f.at(offset) ^= 0x80;
+  return f;
+}
+
+void PrintTo(const BadTape& t, std::ostream* os) { *os << t.name; }
+
+std::vector<BadTape> bad_tapes() {
+  const std::string head = "%\nG17 G21 G91 G93\nN10 G01 X0.005 Y-0.003 F100000.000\n";
+  const std::vector<LineBlock> good = {{10, 5, -3, 100000000}};
+  std::vector<BadTape> t;
+  auto at = [&](const std::string& text, const std::string& what, size_t from = 0) {
+    return text.find(what, from);
+  };
+  std::string s;
+  s = head + "N20 G01 X0.007 Y0.002\nM02\n%\n";
+  t.push_back({"parity", s, TapeError::kParity, 20, at(s, "7 Y"), good});
+  s = head + "N20 G01 Q0.007\nM02\n%\n";
+  t.push_back({"unknown_letter", s, TapeError::kUnknownCharacter, 20, at(s, "Q"), good});
+  s = head + "N20 G01 X65.536\nM02\n%\n";
+  t.push_back({"too_wide", s, TapeError::kValueTooWide, 20, at(s, "536") + 2, good});
+  s = head + "N20 G01 X0.001 N30 G01 X0.002\nM02\n%\n";
+  t.push_back({"missing_eob", s, TapeError::kMissingEndOfBlock, 20, at(s, "N30"), good});
+  s = head + "N20 G01 X0.0";
+  t.push_back({"truncated", s, TapeError::kTruncatedTape, 20, s.size(), good});
+  s = head + "M02\nN30 X0.001\n%\n";
+  t.push_back({"after_end", s, TapeError::kBlockAfterEnd, 10, at(s, "N30"), good});
+  s = head + "N20 G01 X1.00 Y0.000\nM02\n%\n";
+  t.push_back({"short_fraction", s, TapeError::kMalformedNumber, 20, at(s, "X1.00"), good});
+  s = head + "N20 G01 X1.0000\nM02\n%\n";
+  t.push_back({"long_fraction", s, TapeError::kMalformedNumber, 20, at(s, "0000", at(s, "N20")) + 3, good});
+  s = head + "N20 G01 X12\nM02\n%\n";
+  t.push_back({"no_point", s, TapeError::kMalformedNumber, 20, at(s, "X12"), good});
+  s = head + "N20 G01 X1-.000\nM02\n%\n";
+  t.push_back({"late_sign", s, TapeError::kMalformedNumber, 20, at(s, "-."), good});
+  s = head + "N20 G90 X1.000\nM02\n%\n";
+  t.push_back({"g90", s, TapeError::kUnsupportedCode, 20, at(s, "G90"), good});
+  s = head + "N20 G02 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
+  t.push_back({"g02_until_circle_mode", s, TapeError::kUnsupportedCode, 20, at(s, "G02"), good});
+  s = head + "N20 M00\nM02\n%\n";
+  t.push_back({"m00", s, TapeError::kUnsupportedCode, 20, at(s, "M00"), good});
+  s = head + "N1048576 X0.001\nM02\n%\n";
+  t.push_back({"n_too_wide", s, TapeError::kValueTooWide, 10, at(s, "1048576") + 6, good});
+  s = head + "N20 X0.001 F4294967.296\nM02\n%\n";
+  t.push_back({"f_too_wide", s, TapeError::kValueTooWide, 20, at(s, "4294967.296") + 10, good});
+  s = head + "N20 X0.001 %\n";
+  t.push_back({"percent_in_block", s, TapeError::kMissingEndOfBlock, 20, at(s, "%", 3), good});
+  s = head + "%\n";
+  t.push_back({"percent_before_end", s, TapeError::kTruncatedTape, 10, at(s, "%", 3), good});
+  s = "%\nG17 G21 G91 G93\nN10 G01 X0.005\nM02\n%\n";
+  t.push_back({"missing_feed", s, TapeError::kMissingFeed, 10, at(s, "\n", at(s, "N10")), {}});
+  s = head + "N20 X0.001 F0.000\nM02\n%\n";
+  t.push_back({"feed_zero", s, TapeError::kMissingFeed, 20, at(s, "\n", at(s, "N20")), good});
+  s = head + "N20 x0.001\nM02\n%\n";
+  t.push_back({"lower_case", s, TapeError::kUnknownCharacter, 20, at(s, "x"), good});
+  s = head + "N20 (spaces do not end a number, a comment does)5\nM02\n%\n";
+  t.push_back({"digit_without_letter", s, TapeError::kMalformedNumber, 20, at(s, ")5") + 1, good});
+  s = std::string("") + "";
+  t.push_back({"empty_tape", s, TapeError::kTruncatedTape, 0, 0, {}});
+  s = std::string("\0\0\0", 3) + "no program here";
+  t.push_back({"no_start", s, TapeError::kTruncatedTape, 0, s.size(), {}});
+  s = head + "N20 (never closed\nM02\n%\n";
+  t.push_back({"open_comment", s, TapeError::kTruncatedTape, 20, s.size(), good});
+  return t;
+}
+
+
+std::vector<LineBlock> random_line_program(std::mt19937_64& rng, unsigned inc_width,
+                                           uint64_t modulus) {
+  const int64_t max = (int64_t{1} << inc_width) - 1;
+  const int64_t medium = std::min<int64_t>(max, 4095);
+  std::uniform_int_distribution<int> nblocks(1, 8), kind(0, 19);
+  std::vector<LineBlock> prog;
+  const int n = nblocks(rng);
+  for (int i = 0; i < n; ++i) {
+    // Full-width moves cost 2^W clocks, so they are rarer than small ones.
+    auto value = [&]() -> int64_t {
+      switch (kind(rng)) {
+        case 0: case 1: return 0;
+        case 2: return max;
+        case 3: return -max;
+        case 4: return std::uniform_int_distribution<int64_t>(-max, max)(rng);
+        case 5: case 6: case 7: case 8:
+          return std::uniform_int_distribution<int64_t>(-medium, medium)(rng);
+        default: return std::uniform_int_distribution<int64_t>(-300, 300)(rng);
+      }
+    };
+    LineBlock b{static_cast<uint32_t>(10 * (i + 1)), value(), value(), 0};
+    const uint64_t kpow = 1ull << bit_length(static_cast<uint64_t>(std::abs(b.dx) | std::abs(b.dy)));
+    const uint64_t clocks = std::uniform_int_distribution<uint64_t>(1, 3 * kpow + 8)(rng);
+    b.feed = std::min<uint64_t>(ceil_div(modulus, clocks), 0xffffffffull);
+    prog.push_back(b);
+  }
+  return prog;
+}
+
 
 InterpConfig config_for_clock(double clock_hz) {
   InterpConfig cfg;

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <ostream>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -69,5 +71,27 @@ InterpOutputs run_golden(GoldenInterp& dut, const std::vector<uint8_t>& frames,
 
 // Config with the given clock (feed modulus) and default widths.
 InterpConfig config_for_clock(double clock_hz);
+
+// A random line program: 1..8 blocks; increments are 0, +-(2^inc_width - 1), uniform over
+// the whole range, medium or small, of both signs; feeds make each block last
+// 1 .. 3 * 2^k + 8 clocks (a mix of saturated and phase-accumulated blocks that keeps the
+// runs short).
+std::vector<LineBlock> random_line_program(std::mt19937_64& rng, unsigned inc_width,
+                                           uint64_t modulus);
+
+// A bad tape (for the default widths): the error it must raise and the good blocks before
+// it, which must play completely. Used on both engines.
+struct BadTape {
+  const char* name;
+  std::string text;
+  TapeError code;
+  uint32_t block;
+  size_t offset;
+  std::vector<LineBlock> good;
+  // The frames; the parity case flips bit 7 of the frame at `offset`.
+  std::vector<uint8_t> frames() const;
+};
+void PrintTo(const BadTape& t, std::ostream* os);
+std::vector<BadTape> bad_tapes();
 
 }  // namespace ncinterp::test

@@ -1,0 +1,42 @@
+// VCD window of the RTL (see rtl_vcd.h).
+#include "rtl_vcd.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "Vinterp_top_trace.h"
+#include "frame_source.h"
+#include "verilated_interp.h"
+#include "verilated_vcd_c.h"
+
+namespace ncinterp::cosim {
+
+void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
+                   uint64_t first_cycle, uint64_t last_cycle, const std::string& path) {
+  VerilatedInterp<Vinterp_top_trace> rtl(options.config);
+  rtl.context().traceEverOn(true);
+  VerilatedVcdC vcd;
+  rtl.model().trace(&vcd, 99);
+  const std::string tmp = path + ".tmp";
+  vcd.open(tmp.c_str());
+  if (!vcd.isOpen()) throw std::runtime_error(path + ": cannot open for writing");
+  const uint64_t period = std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / clock_hz)));
+  FrameSource source(frames, options.cycles_per_frame);
+  for (uint64_t cycle = 1; cycle <= last_cycle; ++cycle) {
+    const bool ready = rtl.frame_ready();
+    const bool dumping = cycle >= first_cycle;
+    rtl.tick(source.inputs(), [&](int phase) {
+      // clk low half a period before the edge, the edge at cycle * period
+      if (dumping) vcd.dump(cycle * period - (phase == 0 ? period / 2 : 0));
+    });
+    source.clock(ready);
+  }
+  vcd.close();
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot rename the finished VCD into place");
+  }
+}
+
+}  // namespace ncinterp::cosim

@@ -1,0 +1,20 @@
+// VCD of the RTL over a window of clocks, written with Verilator's own tracer.
+// Idea: the RTL with its own FrameSource is deterministic, so re-running the trace-enabled
+// model (Vinterp_top_trace) from reset reproduces exactly the clocks of a lock-step run;
+// only the window [first_cycle, last_cycle] is dumped, so a mismatch found after a billion
+// clocks still gives a small file. Scopes: TOP.interp_top.<instance>.<signal>.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lockstep.h"
+
+namespace ncinterp::cosim {
+
+// Writes path atomically (temporary file + rename). The time axis is in ps at clock_hz:
+// the rising edge of cycle c is at c * period. Throws std::runtime_error on I/O failure.
+void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
+                   uint64_t first_cycle, uint64_t last_cycle, const std::string& path);
+
+}  // namespace ncinterp::cosim

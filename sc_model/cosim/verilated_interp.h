@@ -1,0 +1,116 @@
+// The verilated RTL (rtl/interp_top.sv) behind the golden model's interface: reset(),
+// tick(inputs), outputs(). Model is Vinterp_top (fast) or Vinterp_top_trace (VCD).
+// Idea: one clock = set the inputs, evaluate with clk low, then with clk high (the rising
+// edge); every output is a register, so after the second eval the ports hold the outputs
+// of that edge, which is what GoldenInterp::outputs() holds after tick().
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+
+#include "interp_ports.h"
+#include "verilated.h"
+
+namespace ncinterp {
+
+template <class Model>
+class VerilatedInterp {
+ public:
+  // The RTL is verilated with its default parameters: cfg must have them (only
+  // feed_modulus, an input port, is free).
+  explicit VerilatedInterp(const InterpConfig& cfg)
+      : context_(std::make_unique<VerilatedContext>()),
+        model_(std::make_unique<Model>(context_.get(), "TOP")),
+        modulus_(cfg.feed_modulus) {
+    const InterpConfig rtl;
+    if (cfg.inc_width != rtl.inc_width || cfg.frac_digits != rtl.frac_digits ||
+        cfg.feed_width != rtl.feed_width || cfg.feed_frac_digits != rtl.feed_frac_digits ||
+        cfg.pos_width != rtl.pos_width || cfg.seq_width != rtl.seq_width ||
+        cfg.offset_width != rtl.offset_width || cfg.modulus_width != rtl.modulus_width)
+      throw std::invalid_argument(
+          "the verilated RTL is built with the default parameters; the configuration differs");
+    reset();
+  }
+
+  // One edge with rst_ni low (synchronous reset).
+  void reset() {
+    Model& m = *model_;
+    m.rst_ni = 0;
+    m.feed_modulus_i = modulus_;
+    m.frame_i = 0;
+    m.frame_valid_i = 0;
+    m.tape_end_i = 0;
+    clock([](int) {});
+    m.rst_ni = 1;
+  }
+
+  // One rising edge with these inputs. dump(phase) runs after each eval (0: clk low,
+  // 1: after the edge), e.g. to write a VCD sample.
+  template <class Dump>
+  void tick(const InterpInputs& in, Dump&& dump) {
+    Model& m = *model_;
+    m.frame_i = in.frame;
+    m.frame_valid_i = in.frame_valid;
+    m.tape_end_i = in.tape_end;
+    clock(dump);
+  }
+  void tick(const InterpInputs& in) { tick(in, [](int) {}); }
+
+  bool frame_ready() const { return model_->frame_ready_o; }
+
+  InterpOutputs outputs() const {
+    const Model& m = *model_;
+    InterpOutputs o;
+    o.frame_ready = m.frame_ready_o;
+    o.step_x = m.step_x_o;
+    o.dir_x = m.dir_x_o;
+    o.step_y = m.step_y_o;
+    o.dir_y = m.dir_y_o;
+    o.pos_x = static_cast<int32_t>(m.pos_x_o);  // PosWidth = 32: sign-extend
+    o.pos_y = static_cast<int32_t>(m.pos_y_o);
+    o.block_n = m.block_n_o;
+    o.busy = m.busy_o;
+    o.done = m.done_o;
+    o.error = m.error_o;
+    o.error_code = m.error_code_o;
+    o.error_block = m.error_block_o;
+    o.error_offset = m.error_offset_o;
+    o.feed_saturated = m.feed_saturated_o;
+    return o;
+  }
+
+  // Field-by-field equality with a golden output struct, without building one.
+  bool same_as(const InterpOutputs& g) const {
+    const Model& m = *model_;
+    return g.step_x == static_cast<bool>(m.step_x_o) && g.step_y == static_cast<bool>(m.step_y_o) &&
+           g.frame_ready == static_cast<bool>(m.frame_ready_o) &&
+           g.dir_x == static_cast<bool>(m.dir_x_o) && g.dir_y == static_cast<bool>(m.dir_y_o) &&
+           g.pos_x == static_cast<int32_t>(m.pos_x_o) && g.pos_y == static_cast<int32_t>(m.pos_y_o) &&
+           g.block_n == m.block_n_o && g.busy == static_cast<bool>(m.busy_o) &&
+           g.done == static_cast<bool>(m.done_o) && g.error == static_cast<bool>(m.error_o) &&
+           g.error_code == m.error_code_o && g.error_block == m.error_block_o &&
+           g.error_offset == m.error_offset_o &&
+           g.feed_saturated == static_cast<bool>(m.feed_saturated_o);
+  }
+
+  Model& model() { return *model_; }
+  VerilatedContext& context() { return *context_; }
+
+ private:
+  template <class Dump>
+  void clock(Dump&& dump) {
+    Model& m = *model_;
+    m.clk_i = 0;
+    m.eval();
+    dump(0);
+    m.clk_i = 1;
+    m.eval();
+    dump(1);
+  }
+
+  std::unique_ptr<VerilatedContext> context_;
+  std::unique_ptr<Model> model_;
+  uint64_t modulus_;
+};
+
+}  // namespace ncinterp

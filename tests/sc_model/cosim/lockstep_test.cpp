@@ -1,0 +1,192 @@
+// Lock-step cosim tests: RTL and golden model equal on every clock for random line tapes
+// and bad tapes, with exact pulses and the L1 path bound; the scoreboard reports an
+// injected golden-model fault at the right cycle and block; the VCD window is written.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "interp_test_support.h"
+#include "lockstep.h"
+#include "rtl_vcd.h"
+
+namespace ncinterp {
+namespace {
+
+using cosim::Options;
+using cosim::Result;
+using test::check_line_program;
+using test::frames_of;
+using test::LineBlock;
+using test::OutputRecorder;
+
+Options fast_options() {
+  Options o;
+  o.config = test::config_for_clock(1e3);  // 1 kHz: high feeds saturate, runs stay short
+  o.cycles_per_frame = 1;
+  o.max_cycles = 50'000'000;
+  return o;
+}
+
+Result run(const std::vector<uint8_t>& frames, const Options& o, OutputRecorder& rec) {
+  return cosim::run_lockstep(frames, o, [&](uint64_t c, const InterpOutputs& out) {
+    rec.observe(c, out);
+  });
+}
+
+// Random line tapes in shards, so ctest can run them in parallel.
+class CosimRandom : public ::testing::TestWithParam<int> {};
+
+TEST_P(CosimRandom, RtlEqualsGoldenAndPulsesAreExactWithinTheBound) {
+  const int shard = GetParam();
+  std::mt19937_64 rng(7919 + shard);
+  const Options o = fast_options();
+  for (int t = 0; t < 50; ++t) {
+    const std::vector<LineBlock> prog = test::random_line_program(rng, 16, o.config.feed_modulus);
+    OutputRecorder rec;
+    const Result r = run(frames_of(test::line_tape_text(prog)), o, rec);
+    ASSERT_FALSE(r.mismatch) << "shard " << shard << " tape " << t << ": "
+                             << cosim::describe(*r.mismatch);
+    ASSERT_EQ(r.end, Result::End::kDone) << "shard " << shard << " tape " << t;
+    ASSERT_TRUE(check_line_program(prog, rec)) << "shard " << shard << " tape " << t;
+    ASSERT_EQ(r.stats.blocks, prog.size());
+    uint64_t pulses = 0;
+    for (const LineBlock& b : prog) pulses += std::llabs(b.dx) + std::llabs(b.dy);
+    ASSERT_EQ(r.stats.pulses[0][0] + r.stats.pulses[0][1] + r.stats.pulses[1][0] +
+                  r.stats.pulses[1][1],
+              pulses);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shards, CosimRandom, ::testing::Range(0, 6));
+
+// The same with a 1 MHz clock and realistic feeds: phase-accumulated blocks with long
+// idle stretches between iterations, and a slow reader that leaves gaps.
+TEST(Cosim, SlowReaderAndRealFeedsStayInLockStep) {
+  Options o;
+  o.config = test::config_for_clock(1e6);
+  o.cycles_per_frame = 200;
+  const std::vector<LineBlock> prog = {{1, 1234, -567, 3000000}, {2, -5, 2, 20000000},
+                                       {3, 0, 0, 90000000},      {4, 65535, 65535, 4000000000ull}};
+  OutputRecorder rec;
+  const Result r = run(frames_of(test::line_tape_text(prog)), o, rec);
+  ASSERT_FALSE(r.mismatch) << cosim::describe(*r.mismatch);
+  ASSERT_EQ(r.end, Result::End::kDone);
+  EXPECT_TRUE(check_line_program(prog, rec));
+  EXPECT_GT(r.stats.gap_cycles, 0u);
+  EXPECT_EQ(r.stats.saturated_blocks, 1u);
+}
+
+class CosimBadTape : public ::testing::TestWithParam<test::BadTape> {};
+
+TEST_P(CosimBadTape, BothEnginesStopAtTheBlockBoundary) {
+  const test::BadTape& bad = GetParam();
+  OutputRecorder rec;
+  const Result r = run(bad.frames(), fast_options(), rec);
+  ASSERT_FALSE(r.mismatch) << cosim::describe(*r.mismatch);
+  ASSERT_EQ(r.end, Result::End::kTapeError);
+  EXPECT_EQ(r.last.error_code, static_cast<uint8_t>(bad.code));
+  EXPECT_EQ(r.last.error_block, bad.block);
+  EXPECT_EQ(r.last.error_offset, bad.offset);
+  EXPECT_TRUE(check_line_program(bad.good, rec));
+}
+
+INSTANTIATE_TEST_SUITE_P(Tapes, CosimBadTape, ::testing::ValuesIn(test::bad_tapes()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The scoreboard can fail: a one-cycle fault in the golden model is reported at the cycle
+// and block where it first shows, with the cycles matched before it.
+const std::vector<LineBlock> kFaultProgram = {{11, 40, 25, 2000000}, {12, -30, 10, 2000000}};
+
+TEST(CosimScoreboard, ReportsAnInjectedFaultAtItsCycleAndBlock) {
+  const std::vector<uint8_t> frames = frames_of(test::line_tape_text(kFaultProgram));
+  OutputRecorder clean;
+  ASSERT_EQ(run(frames, fast_options(), clean).end, Result::End::kDone);
+  // A cycle inside block 12 with no pulse on X, and the first X pulse after it.
+  uint64_t start12 = 0;
+  for (const auto& s : clean.starts)
+    if (s.block == 12) start12 = s.cycle;
+  ASSERT_GT(start12, 0u);
+  std::set<uint64_t> x_pulses;
+  for (const auto& p : clean.pulses)
+    if (p.axis == 0) x_pulses.insert(p.cycle);
+  uint64_t c = start12 + 3;
+  while (x_pulses.count(c)) ++c;
+  const auto next = x_pulses.upper_bound(c);
+  ASSERT_NE(next, x_pulses.end());
+  const uint64_t next_x = *next;
+
+  struct Case {
+    GoldenInterp::Fault::Kind kind;
+    uint64_t cycle;
+    const char* signal;
+    int64_t expected, actual;
+  };
+  const Case cases[] = {
+      {GoldenInterp::Fault::kLostPulse, c, "step_x_o", 0, 1},
+      {GoldenInterp::Fault::kStuckStep, c, "step_x_o", 1, 0},
+      {GoldenInterp::Fault::kWrongDirection, c, "dir_x_o", 1, 0},  // block 12 moves -X
+  };
+  for (const Case& k : cases) {
+    Options o = fast_options();
+    o.fault = {k.kind, c, 0};
+    const Result r = cosim::run_lockstep(frames, o);
+    ASSERT_TRUE(r.mismatch) << "fault kind " << k.kind << " not reported";
+    const uint64_t want = k.kind == GoldenInterp::Fault::kLostPulse ? next_x : c;
+    EXPECT_EQ(r.end, Result::End::kMismatch);
+    EXPECT_EQ(r.mismatch->cycle, want) << cosim::describe(*r.mismatch);
+    EXPECT_EQ(r.mismatch->block, 12u);
+    EXPECT_EQ(r.mismatch->signal, k.signal);
+    EXPECT_EQ(r.mismatch->expected, k.expected);
+    EXPECT_EQ(r.mismatch->actual, k.actual);
+    EXPECT_EQ(r.mismatch->cycles_matched, want - 1);
+    EXPECT_EQ(r.cycles, want);
+  }
+}
+
+TEST(CosimScoreboard, AccumulatorFaultShowsUpLaterInThePulses) {
+  const std::vector<uint8_t> frames = frames_of(test::line_tape_text({{5, 1, 0, 2000000}}));
+  OutputRecorder clean;
+  ASSERT_EQ(run(frames, fast_options(), clean).end, Result::End::kDone);
+  Options o = fast_options();
+  o.fault = {GoldenInterp::Fault::kAccumulatorOffByOne, clean.starts.at(0).cycle, 0};
+  const Result r = cosim::run_lockstep(frames, o);
+  ASSERT_TRUE(r.mismatch);
+  EXPECT_GT(r.mismatch->cycle, clean.starts.at(0).cycle);
+  EXPECT_EQ(r.mismatch->block, 5u);
+}
+
+TEST(CosimScoreboard, StopsAtTheCycleLimit) {
+  Options o = fast_options();
+  o.max_cycles = 100;
+  const Result r = cosim::run_lockstep(frames_of(test::line_tape_text(kFaultProgram)), o);
+  EXPECT_EQ(r.end, Result::End::kCycleLimit);
+  EXPECT_EQ(r.cycles, 100u);
+  EXPECT_FALSE(r.mismatch);
+}
+
+TEST(CosimVcd, WritesTheRequestedWindowOfTheRtl) {
+  const std::string path = ::testing::TempDir() + "cosim_window.vcd";
+  std::remove(path.c_str());
+  const std::vector<uint8_t> frames = frames_of(test::line_tape_text(kFaultProgram));
+  cosim::write_rtl_vcd(frames, fast_options(), 1e3, 40, 60, path);
+  std::ifstream in(path);
+  ASSERT_TRUE(in.good());
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string vcd = text.str();
+  EXPECT_NE(vcd.find("$scope module interp_top"), std::string::npos);
+  EXPECT_NE(vcd.find(" step_x_o "), std::string::npos);
+  EXPECT_NE(vcd.find("#39500000000"), std::string::npos);  // clk low before edge 40 (1 ms)
+  EXPECT_NE(vcd.find("#60000000000"), std::string::npos);  // edge 60
+  EXPECT_EQ(vcd.find("#61000000000"), std::string::npos);
+  EXPECT_FALSE(std::ifstream(path + ".tmp").good());
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace ncinterp
