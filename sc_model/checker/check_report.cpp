@@ -90,12 +90,12 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   if (o.reference) {
     j["total_error"] = stat_json(c.total_error(), c, f);
     j["total_error"]["measured_against"] =
-        ctx.setup.cutter_radius_mm > 0 ? "the offset contour: |distance to the part contour - R|"
+        ctx.setup.cutter_radius_mm > 0 ? "the offset contour: R - d inside (gouge); outside, the part left uncut at the foot"
                                        : "the part contour";
-    double corner = 0.0;
+    double outside = 0.0;
     size_t rapids = 0;
-    for (const BlockResult& r : c.results()) corner = std::max(corner, r.corner_excursion), rapids += r.rapid;
-    j["total_error"]["corner_excursion_max_mm"] = corner * o.blu_mm;
+    for (const BlockResult& r : c.results()) outside = std::max(outside, r.outside_excursion), rapids += r.rapid;
+    if (ctx.setup.cutter_radius_mm > 0) j["total_error"]["outside_excursion_max_mm"] = outside * o.blu_mm;
     j["total_error"]["rapid_blocks"] = rapids;
   }
   const FeedSummary fs = feed_summary(c);
@@ -143,7 +143,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
     if (o.reference) {
       e["rapid"] = r.rapid;
       e["total_error"] = stat_json(r.total, c, f);
-      if (r.corner_excursion > 0) e["corner_excursion_mm"] = r.corner_excursion * o.blu_mm;
+      if (r.outside_excursion > 0) e["outside_excursion_mm"] = r.outside_excursion * o.blu_mm;
     }
     per.push_back(std::move(e));
   }

@@ -20,10 +20,7 @@ ReferenceContour::ReferenceContour(const firststage::Contour& contour, const Ref
       radius_(options.cutter_radius_mm / options.blu_mm),
       cut_(cutting_in_blu(contour, 1.0 / options.blu_mm)) {
   const double to_blu = 1.0 / options.blu_mm;
-  const int n = static_cast<int>(contour.segments.size());
-  // Convex corners between consecutive cutting segments (closed contours wrap around).
-  const bool closed = contour.closed();
-  for (int s = 0; s < n; ++s) {
+  for (size_t s = 0; s < contour.segments.size(); ++s) {
     const Segment& seg = contour.segments[s];
     if (seg.rapid) {
       rapids_.push_back(seg.scaled(to_blu));
@@ -33,41 +30,51 @@ ReferenceContour::ReferenceContour(const firststage::Contour& contour, const Ref
     names_.push_back(idx >= 0 && idx < static_cast<int>(contour.element_names.size())
                          ? contour.element_names[idx]
                          : "segment " + std::to_string(s + 1));
-    auto convex = [&](int a, int b) -> char {
-      if (a < 0 || b < 0 || a >= n || b >= n) return 0;
-      const Segment& sa = contour.segments[a];
-      const Segment& sb = contour.segments[b];
-      if (sa.rapid || sb.rapid || firststage::joint_turn(sa, sb) <= firststage::kSmoothJointAngle)
-        return 0;
-      const double turn = cross(sa.eval(1.0).d1, sb.eval(0.0).d1);
-      // Convex: the path turns away from the cutter's side.
-      return options.cutter_left ? turn < 0 : turn > 0;
-    };
-    const int prev = s > 0 ? s - 1 : (closed ? n - 1 : -1);
-    const int next = s + 1 < n ? s + 1 : (closed ? 0 : -1);
-    corner_start_.push_back(convex(prev, s));
-    corner_end_.push_back(convex(s, next));
   }
 }
 
-bool ReferenceContour::convex_corner_at(int segment, double u) const {
-  if (segment < 0) return false;
-  return (u <= 0.0 && corner_start_[segment]) || (u >= 1.0 && corner_end_[segment]);
+void ReferenceContour::set_tool_path(const std::vector<ProgrammedBlock>& blocks,
+                                     const std::vector<bool>& rapid, const std::vector<double>& bounds) {
+  const Vec2 start = to_vec(options_.start);
+  std::vector<Segment> segs;
+  path_bound_.clear();
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    const ProgrammedBlock& b = blocks[k];
+    if (rapid[k] || (b.start == b.end && !b.is_arc())) continue;
+    if (b.is_arc()) {
+      const Vec2 ra = to_vec(b.start) - b.centre;
+      segs.push_back(Segment::arc(start + b.centre, norm(ra), std::atan2(ra.y, ra.x), b.sweep()));
+      // The arc segment has the start radius; the end radius differs by < 1 BLU.
+      path_bound_.push_back(bounds[k] + std::fabs(norm(to_vec(b.end) - b.centre) - norm(ra)));
+    } else {
+      segs.push_back(Segment::line(start + to_vec(b.start), start + to_vec(b.end)));
+      path_bound_.push_back(bounds[k]);
+    }
+  }
+  path_ = ContourDistance(std::move(segs));
 }
 
-TotalError ReferenceContour::measure(Vec2 position) const {
+TotalError ReferenceContour::centre_only(Vec2 position) const {
   TotalError e;
   const Vec2 start = to_vec(options_.start);
   const ContourFoot f = cut_.nearest(start + position);
   e.segment = f.segment;
   e.foot = f.foot - start;
-  if (radius_ <= 0.0) {
-    e.error = e.signed_excess = f.distance;
-    return e;
-  }
   e.signed_excess = f.distance - radius_;
-  e.error = std::fabs(e.signed_excess);
-  e.corner = e.signed_excess > 0 && convex_corner_at(f.segment, f.u);
+  e.error = radius_ > 0 ? std::fabs(e.signed_excess) : f.distance;
+  return e;
+}
+
+TotalError ReferenceContour::measure(Vec2 position) const {
+  TotalError e = centre_only(position);
+  if (radius_ <= 0.0 || e.signed_excess <= 0.0 || path_.empty()) return e;
+  // Outside the equidistant: how far is the foot from the cutter's whole path?
+  const ContourFoot reach = path_.nearest(to_vec(options_.start) + e.foot);
+  const double uncut = std::max(0.0, reach.distance + path_bound_[reach.segment] - radius_);
+  if (uncut < e.error) {
+    e.error = uncut;
+    e.outside = true;
+  }
   return e;
 }
 
@@ -78,8 +85,8 @@ bool ReferenceContour::is_rapid(const ProgrammedBlock& block, double tol_blu) co
   bool on_cut = true;
   for (double s : samples) {
     const Vec2 q = block.point_at(s);
-    const TotalError e = measure(q);
-    if (e.error > tol_blu && !e.corner) on_cut = false;
+    const TotalError e = centre_only(q);
+    if (e.error > tol_blu) on_cut = false;
   }
   if (on_cut) return false;
   // The offset re-aims a rapid at the next chain's start, up to sqrt(2) R from the input's

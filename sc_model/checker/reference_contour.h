@@ -31,7 +31,7 @@ struct ReferenceOptions {
 struct TotalError {
   double error = 0.0;      // BLU: |d| (no offset) or |d - R|
   double signed_excess = 0.0;  // d - R (offset) or d, BLU
-  bool corner = false;     // offset only: outside the equidistant at a convex corner
+  bool outside = false;    // offset only: d > R at a foot the cutter reaches from elsewhere
   int segment = -1;        // contour segment of the foot
   Vec2 foot;               // relative to the tape start, BLU
 };
@@ -40,6 +40,9 @@ class ReferenceContour {
  public:
   ReferenceContour(const firststage::Contour& contour, const ReferenceOptions& options);
 
+  // The programmed cutter path (offset case): the non-rapid blocks, with their bounds.
+  void set_tool_path(const std::vector<ProgrammedBlock>& blocks, const std::vector<bool>& rapid,
+                     const std::vector<double>& bounds);
   // Total error of a tool position (relative to the tape start, BLU).
   TotalError measure(Vec2 position) const;
   // True when a programmed block follows one of the input's rapid moves (G0) and not the
@@ -54,15 +57,15 @@ class ReferenceContour {
   IntPoint start() const { return options_.start; }
 
  private:
-  bool convex_corner_at(int segment, double u) const;
+  TotalError centre_only(Vec2 position) const;  // e = d - R, without the path
 
   ReferenceOptions options_;
   double radius_ = 0.0;  // BLU
   ContourDistance cut_;
   std::vector<firststage::Segment> rapids_;
   std::vector<std::string> names_;     // per cutting segment
-  // Per cutting segment: is the joint at its start / end a convex corner (offset case)?
-  std::vector<char> corner_start_, corner_end_;
+  ContourDistance path_{std::vector<Segment>{}};  // the programmed cutter path, absolute BLU
+  std::vector<double> path_bound_;     // per path segment: interpolator bound, BLU
 };
 
 }  // namespace ncinterp::checker

@@ -69,7 +69,7 @@ void ErrorStat::merge(const ErrorStat& o) {
 double ErrorStat::rms() const { return count ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0; }
 
 TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
-                                     const ReferenceContour* reference, const CheckerOptions& options)
+                                     ReferenceContour* reference, const CheckerOptions& options)
     : blocks_(std::move(blocks)), reference_(reference), options_(options) {
   results_.resize(blocks_.size());
   for (size_t k = 0; k < blocks_.size(); ++k) {
@@ -85,6 +85,12 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
                            options_.feed_modulus);
       r.saturated = s.saturated();
     }
+  }
+  if (reference_ && reference_->radius_blu() > 0) {
+    std::vector<bool> rapid;
+    std::vector<double> bounds;
+    for (const BlockResult& r : results_) rapid.push_back(r.rapid), bounds.push_back(r.bound);
+    reference_->set_tool_path(blocks_, rapid, bounds);
   }
 }
 
@@ -233,13 +239,10 @@ void TrajectoryChecker::on_pulse(uint64_t cycle, const bool step[2], const bool 
   float total = -1.0f;
   if (reference_ && !r.rapid) {
     const TotalError e = reference_->measure(q);
-    if (e.corner) {
-      r.corner_excursion = std::max(r.corner_excursion, e.error);
-    } else {
-      r.total.add(e.error, cycle, pos_, cur_);
-      total_.add(e.error, cycle, pos_, cur_);
-      total = static_cast<float>(e.error);
-    }
+    if (e.outside) r.outside_excursion = std::max(r.outside_excursion, e.signed_excess);
+    r.total.add(e.error, cycle, pos_, cur_);
+    total_.add(e.error, cycle, pos_, cur_);
+    total = static_cast<float>(e.error);
   }
   if (options_.keep_pulses)
     pulses_.push_back({cycle, static_cast<uint32_t>(cur_), pos_, static_cast<float>(path), total});

@@ -75,7 +75,9 @@ struct BlockResult {
   uint64_t pulses[2] = {0, 0};
   ErrorStat path;          // distance to the programmed block
   ErrorStat total;         // distance to the contour (not rapid)
-  double corner_excursion = 0.0;  // offset: max distance outside the equidistant at a corner
+  // Offset: largest distance of the centre outside the equidistant where the cutter reaches
+  // the part from elsewhere on its path (vertices turning away from the part), BLU.
+  double outside_excursion = 0.0;
   double bound = 0.0;      // interpolator bound used for the path rule, BLU
   bool saturated = false;  // lines: needs more iterations than clocks (documented)
   double ideal_clocks = 0.0;  // 1/F in clocks
@@ -106,8 +108,9 @@ struct CheckerOptions {
 
 class TrajectoryChecker {
  public:
-  // reference may be null (no contour: only the interpolator's error and the rules).
-  TrajectoryChecker(std::vector<ProgrammedBlock> blocks, const ReferenceContour* reference,
+  // reference may be null (no contour: only the interpolator's error and the rules); with
+  // a cutter radius the checker gives it the programmed cutter path.
+  TrajectoryChecker(std::vector<ProgrammedBlock> blocks, ReferenceContour* reference,
                     const CheckerOptions& options);
 
   // The outputs after reset (cycle 0), then after every clock edge, in order.
@@ -138,7 +141,7 @@ class TrajectoryChecker {
 
   std::vector<ProgrammedBlock> blocks_;
   std::vector<BlockResult> results_;
-  const ReferenceContour* reference_;
+  ReferenceContour* reference_;
   CheckerOptions options_;
 
   bool started_ = false;

@@ -1,24 +1,23 @@
 #include <gtest/gtest.h>
 #include <iostream>
-#include "regression_support.h"
+#include "random_contour.h"
 
 namespace ncinterp::regression {
 namespace {
 
 TEST(Regression, Explore) {
-  for (std::string f : {"circle_r50.json", "reference_table.json", "naca2412_selig.dat", "naca2412_lednicer.dat", "part.nc"})
-  for (int m = 1; m <= 3; ++m) {
-  Case c;
-  c.name = f + " m" + std::to_string(m);
-  c.contour = firststage::read_contour(example_path(f), {});
-  c.first_stage.feed_mm_min = 20000;
-  c.first_stage.method = m;
-  c.check.reader_cps = 1e5;
-  try {
-  const auto out = run_case(c);
-  std::cout << describe(c, out) << out.seconds << " s\n";
-  } catch (std::exception& e) { std::cout << c.name << ": " << e.what() << "\n"; }
+  RandomCaseLimits lim;
+  int fails = 0;
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    try {
+      Case c = random_case(seed, lim);
+      const auto out = run_case(c);
+      std::string d = describe(c, out);
+      if (!out.passed()) { ++fails; std::cout << "method " << c.first_stage.method << " tol " << c.first_stage.tol_mm << " R " << c.first_stage.cutter_radius_mm << " w " << c.first_stage.width << "\n" << d; }
+      else std::cout << c.name << " ok " << out.checker->total_error().max * out.blu_mm << "/" << c.first_stage.tol_mm << " R " << c.first_stage.cutter_radius_mm << " " << out.checker->cycles() << " clk " << out.seconds << " s\n";
+    } catch (std::exception& e) { ++fails; std::cout << seed << ": " << e.what() << "\n"; }
   }
+  std::cout << fails << " fails\n";
 }
 
 }  // namespace
