@@ -10,7 +10,8 @@
 #include "line_schedule.h"
 
 #ifdef NCINTERP_CHECKER_HAS_RTL
-#include "rtl_harness.h"
+#include "Vinterp_top.h"
+#include "verilated_interp.h"
 #endif
 
 namespace ncinterp::checker {
@@ -114,7 +115,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
     out.run = run_engine(dut, source, budget, observe);
   } else {
 #ifdef NCINTERP_CHECKER_HAS_RTL
-    RtlHarness dut(cfg);
+    VerilatedInterp<Vinterp_top> dut(cfg);
     out.run = run_engine(dut, source, budget, observe);
 #endif
   }

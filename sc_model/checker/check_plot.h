@@ -1,0 +1,16 @@
+// SVG plot of a check (`ncinterp check --svg`): the contour, the programmed chords and
+// arcs, the pulse staircase, a panel zoomed on the worst point, and the error along the
+// path with the delta band; axes in mm, labels and a legend (drawn with sw/plot).
+#pragma once
+#include <string>
+
+#include "check_report.h"
+
+namespace ncinterp::checker {
+
+// True when this build has the plot library.
+bool svg_available();
+// The SVG document. Throws std::runtime_error when the build has no plot library.
+std::string check_svg(const CheckOutcome& outcome, const ReportContext& context);
+
+}  // namespace ncinterp::checker
