@@ -11,6 +11,8 @@ namespace ncinterp::cosim {
 
 namespace {
 
+constexpr uint64_t kProgressMask = (uint64_t{1} << 24) - 1;
+
 // First differing output, in port order; expected = golden, actual = RTL.
 Mismatch first_difference(const InterpOutputs& g, const InterpOutputs& r) {
   struct Field {
@@ -98,6 +100,7 @@ Result run_lockstep(const std::vector<uint8_t>& frames, const Options& options,
       }
       idle_run = o.busy ? 0 : idle_run + 1;
       if (observer) observer(cycle, o);
+      if ((cycle & kProgressMask) == 0 && options.progress) options.progress(cycle);
       if (!compare()) break;
     }
   }

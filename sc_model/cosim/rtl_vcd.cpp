@@ -1,9 +1,11 @@
 // VCD window of the RTL (see rtl_vcd.h).
 #include "rtl_vcd.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
+
+#include "atomic_file.h"
 
 #include "Vinterp_top_trace.h"
 #include "frame_source.h"
@@ -18,8 +20,8 @@ void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, d
   rtl.context().traceEverOn(true);
   VerilatedVcdC vcd;
   rtl.model().trace(&vcd, 99);
-  const std::string tmp = path + ".tmp";
-  vcd.open(tmp.c_str());
+  AtomicOutputFile out(path);  // removed again unless committed
+  vcd.open(out.temp_path().c_str());
   if (!vcd.isOpen()) throw std::runtime_error(path + ": cannot open for writing");
   const uint64_t period = std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / clock_hz)));
   FrameSource source(frames, options.cycles_per_frame);
@@ -33,10 +35,7 @@ void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, d
     source.clock(ready);
   }
   vcd.close();
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot rename the finished VCD into place");
-  }
+  out.commit();
 }
 
 }  // namespace ncinterp::cosim

@@ -12,7 +12,7 @@
 
 namespace ncinterp::cosim {
 
-// Writes path atomically (temporary file + rename). The time axis is in ps at clock_hz:
+// Writes path atomically (AtomicOutputFile: temporary file + rename). The time axis is in ps at clock_hz:
 // the rising edge of cycle c is at c * period. Throws std::runtime_error on I/O failure.
 void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
                    uint64_t first_cycle, uint64_t last_cycle, const std::string& path);

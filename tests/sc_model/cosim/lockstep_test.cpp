@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <random>
 #include <set>
@@ -184,7 +185,9 @@ TEST(CosimVcd, WritesTheRequestedWindowOfTheRtl) {
   EXPECT_NE(vcd.find("#39500000000"), std::string::npos);  // clk low before edge 40 (1 ms)
   EXPECT_NE(vcd.find("#60000000000"), std::string::npos);  // edge 60
   EXPECT_EQ(vcd.find("#61000000000"), std::string::npos);
-  EXPECT_FALSE(std::ifstream(path + ".tmp").good());
+  for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir()))
+    EXPECT_EQ(entry.path().filename().string().rfind(".cosim_window.vcd", 0), std::string::npos)
+        << "temporary left behind: " << entry.path();
   std::remove(path.c_str());
 }
 

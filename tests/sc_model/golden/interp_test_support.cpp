@@ -7,6 +7,8 @@
 #include <map>
 #include <sstream>
 
+#include "tape.h"
+
 namespace ncinterp::test {
 
 namespace {
@@ -19,38 +21,26 @@ unsigned bit_length(uint64_t x) {
   return k;
 }
 
-std::string fixed(int64_t value, unsigned frac_digits) {
-  int64_t scale = 1;
-  for (unsigned i = 0; i < frac_digits; ++i) scale *= 10;
-  const uint64_t mag = static_cast<uint64_t>(value < 0 ? -value : value);
-  std::string frac = std::to_string(mag % static_cast<uint64_t>(scale));
-  frac.insert(0, frac_digits - frac.size(), '0');
-  return std::string(value < 0 ? "-" : "") + std::to_string(mag / static_cast<uint64_t>(scale)) +
-         "." + frac;
-}
-
 }  // namespace
 
 std::string line_tape_text(const std::vector<LineBlock>& blocks, unsigned frac_digits,
                            unsigned feed_frac_digits) {
-  std::string text = "%\nG17 G21 G91 G93\n";
+  tape::Program program;
   for (const LineBlock& b : blocks) {
-    text += "N" + std::to_string(b.n) + " G01 X" + fixed(b.dx, frac_digits) + " Y" +
-            fixed(b.dy, frac_digits) + " F" + fixed(static_cast<int64_t>(b.feed), feed_frac_digits) +
-            "\n";
+    tape::Block block;
+    block.n = b.n;
+    block.dx = b.dx;
+    block.dy = b.dy;
+    block.feed = b.feed;
+    program.blocks.push_back(block);
   }
-  text += "M02\n%\n";
-  return text;
+  tape::Format format;
+  format.frac_digits = frac_digits;
+  format.feed_frac_digits = feed_frac_digits;
+  return tape::format_program(program, format);
 }
 
-std::vector<uint8_t> frames_of(std::string_view text) {
-  std::vector<uint8_t> frames;
-  for (char c : text) {
-    const uint8_t ch = static_cast<uint8_t>(c) & 0x7f;
-    frames.push_back(static_cast<uint8_t>(ch | (__builtin_parity(ch) ? 0x80 : 0)));
-  }
-  return frames;
-}
+std::vector<uint8_t> frames_of(std::string_view text) { return tape::add_parity(text); }
 
 void OutputRecorder::observe(uint64_t cycle, const InterpOutputs& o) {
   cycles = cycle;

@@ -27,10 +27,11 @@ struct LineBlock {
   uint64_t feed = 0;
 };
 
-// Tape text: "%", setup block, the line blocks, M02, "%".
+// Tape text of the line blocks (ncinterp::tape::format_program: "%", setup block, the
+// blocks, M02, "%").
 std::string line_tape_text(const std::vector<LineBlock>& blocks, unsigned frac_digits = 3,
                            unsigned feed_frac_digits = 3);
-// Frames of a tape text with ISO 840 even parity in bit 7.
+// Frames of a tape text with ISO 840 even parity in bit 7 (ncinterp::tape::add_parity).
 std::vector<uint8_t> frames_of(std::string_view text);
 
 // Records what the interpolator's outputs show, cycle by cycle.

@@ -1,0 +1,157 @@
+// `ncinterp play` end to end: the bundled example gives the same report (pulses, final
+// position, cycles, path error, timing) with the golden and the RTL engine, and their VCDs
+// name the ports identically; the GTKWave save file names only signals the RTL VCD has; a
+// bad tape gives one error line, a non-zero exit, a complete error report and no VCD.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "vcd_header.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+class PlayCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ncinterp_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  static std::string slurp(const std::string& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  // Runs `ncinterp play ARGS`; stdout/stderr go to files outside the checked directory.
+  int play(const std::string& args) {
+    const std::string out = (dir_.parent_path() / (dir_.filename().string() + ".out")).string();
+    const std::string err = (dir_.parent_path() / (dir_.filename().string() + ".err")).string();
+    const std::string cmd = std::string(NCINTERP_BINARY) + " play " + args + " >" + out + " 2>" + err;
+    const int status = std::system(cmd.c_str());
+    stdout_ = slurp(out);
+    stderr_ = slurp(err);
+    fs::remove(out);
+    fs::remove(err);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  fs::path dir_;
+  std::string stdout_, stderr_;
+};
+
+const std::string kGear = std::string(NCINTERP_EXAMPLES_DIR) + "/gear.nc";
+
+TEST_F(PlayCli, BothEnginesPlayTheExampleIdentically) {
+  ASSERT_EQ(play(kGear + " --engine golden --report " + path("g.json") + " --vcd " + path("g.vcd") +
+                 " --vcd-from N2 --vcd-to N3"), 0) << stderr_;
+  ASSERT_EQ(play(kGear + " --engine rtl --report " + path("r.json") + " --vcd " + path("r.vcd") +
+                 " --vcd-from N2 --vcd-to N3"), 0) << stderr_;
+  EXPECT_EQ(files(), (std::vector<std::string>{"g.json", "g.vcd", "r.json", "r.vcd"}));
+  nlohmann::json g = nlohmann::json::parse(slurp(path("g.json")));
+  nlohmann::json r = nlohmann::json::parse(slurp(path("r.json")));
+  EXPECT_EQ(g["status"], "ok");
+  EXPECT_EQ(g["engine"], "golden");
+  EXPECT_EQ(r["engine"], "rtl");
+  EXPECT_EQ(g["blocks"], 48);
+  EXPECT_EQ(g["final_position_blu"], g["expected_position_blu"]);
+  EXPECT_EQ(g["final_position_blu"]["x"], 0);  // the outline closes
+  EXPECT_EQ(g["path_within_l1_bound"], true);
+  EXPECT_EQ(g["gap_cycles"], 0);
+  EXPECT_LT(g["feed"]["worst_time_error_cycles"].get<double>(), 1.0);
+  EXPECT_GT(g["pulses"]["x"]["plus"].get<uint64_t>(), 0u);
+  for (const char* key : {"blocks", "cycles", "pulses", "final_position_blu", "max_path_error_blu",
+                          "status", "gap_cycles", "lead_in_cycles", "feed", "frames_read"})
+    EXPECT_EQ(g[key], r[key]) << key;
+
+  const auto gs = ncinterp::test::vcd_signals(path("g.vcd"));
+  const auto rs = ncinterp::test::vcd_signals(path("r.vcd"));
+  EXPECT_EQ(gs.size(), 21u);  // the interpolator's ports, clock and reset included
+  for (const auto& [name, width] : gs) {
+    ASSERT_EQ(name.rfind("SystemC.interp.interp_top.", 0), 0u) << name;
+    ASSERT_TRUE(rs.count(name)) << name << " is not in the RTL VCD";
+    EXPECT_EQ(rs.at(name), width) << name;
+  }
+  // Same window: the same first and last edge.
+  const auto gt = ncinterp::test::vcd_times(path("g.vcd"));
+  const auto rt = ncinterp::test::vcd_times(path("r.vcd"));
+  ASSERT_FALSE(gt.empty());
+  ASSERT_FALSE(rt.empty());
+  EXPECT_NEAR(static_cast<double>(gt.front()), static_cast<double>(rt.front()), 500000.0);
+  EXPECT_NEAR(static_cast<double>(gt.back()), static_cast<double>(rt.back()), 500000.0);
+
+  // The GTKWave save file opens signals the RTL VCD has (GTKWave drops unknown ones silently).
+  std::ifstream gtkw(std::string(NCINTERP_EXAMPLES_DIR) + "/../waves/interp.gtkw");
+  ASSERT_TRUE(gtkw) << "waves/interp.gtkw missing";
+  std::string line;
+  int named = 0;
+  while (std::getline(gtkw, line)) {
+    if (line.empty() || line[0] == '@' || line[0] == '[' || line[0] == '*' || line[0] == '-') continue;
+    const std::string name = line.substr(0, line.find('['));
+    EXPECT_TRUE(rs.count(name)) << "waves/interp.gtkw names " << name;
+    ++named;
+  }
+  EXPECT_GT(named, 15);
+}
+
+TEST_F(PlayCli, BadTapeGivesOneLineAnErrorReportAndNoVcd) {
+  std::ifstream in(kGear);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const size_t at = text.find("N3 ") + 10;  // "N3 G01 X-2.116": the '.' -> ','
+  ASSERT_EQ(text[at], '.');
+  text[at] = ',';
+  std::ofstream(path("bad.nc")) << text;
+  EXPECT_EQ(play(path("bad.nc") + " --vcd " + path("bad.vcd") + " --report " + path("bad.json")), 1);
+  // The ',' ends the word "X-2", which is checked first: a malformed number (no point),
+  // reported at the X, before the ',' itself (an unknown character) is looked at.
+  const std::string expect_line = path("bad.nc") + ": block N3, offset " +
+                                  std::to_string(text.find("N3 ") + 7) + ": malformed number";
+  EXPECT_EQ(stderr_.rfind(expect_line, 0), 0u) << stderr_;
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(files(), (std::vector<std::string>{"bad.json", "bad.nc"}));
+  const nlohmann::json j = nlohmann::json::parse(slurp(path("bad.json")));
+  EXPECT_EQ(j["status"], "error");
+  EXPECT_EQ(j["error"]["block"], 3);
+  EXPECT_EQ(j["error"]["offset"], text.find("N3 ") + 7);
+  EXPECT_EQ(j["blocks"], 2);  // N1 and N2 played, nothing of N3
+  EXPECT_EQ(j["reader_agrees"], true);
+}
+
+TEST_F(PlayCli, UnreadableInputNamesTheFile) {
+  EXPECT_EQ(play(path("none.tape") + " --report " + path("r.json")), 1);
+  EXPECT_NE(stderr_.find(path("none.tape")), std::string::npos) << stderr_;
+  std::ofstream(path("latin1.nc")) << "%\nN1 G01 X1.000 F1.000 (\xE9)\nM02\n%\n";
+  EXPECT_EQ(play(path("latin1.nc") + " --report " + path("r.json")), 1);
+  EXPECT_NE(stderr_.find(path("latin1.nc") + ": offset 24: byte 0xE9"), std::string::npos) << stderr_;
+  EXPECT_EQ(files(), (std::vector<std::string>{"latin1.nc"}));
+}
+
+TEST_F(PlayCli, BadOptionsWriteNothing) {
+  EXPECT_NE(play(kGear + " --vcd " + path("w.vcd") + " --vcd-from X5"), 0);
+  EXPECT_NE(play(kGear + " --vcd " + path("w.vcd") + " --vcd-from N999"), 0);
+  EXPECT_NE(stderr_.find("N999"), std::string::npos) << stderr_;
+  EXPECT_NE(play(kGear + " --vcd " + path("w.vcd") + " --vcd-from N6 --vcd-to N4"), 0);
+  EXPECT_NE(play(kGear + " --engine fpga"), 0);
+  EXPECT_NE(play(kGear + " --vcd-from 5"), 0);  // a window without --vcd
+  EXPECT_TRUE(files().empty());
+}
+
+}  // namespace
