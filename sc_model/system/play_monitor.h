@@ -1,0 +1,103 @@
+// Monitors of a play run: what the interpolator's outputs show, clock by clock, judged
+// against the program read back from the tape.
+// Idea: the monitor sees only the interpolator's ports (the same for the golden model and
+// the RTL), once per clock after the edge, and the programmed blocks (tape::Program from
+// the software reader). From these it measures
+//   - pulses per axis and direction, final position, gap clocks;
+//   - path error: every pulse position's distance to its block's programmed chord. Pulses
+//     are assigned to blocks by count (block k owns the |dx_k| + |dy_k| pulses after
+//     those of blocks 0..k-1), which needs no block boundary on the ports;
+//   - block timing: a block starts where busy rises or block_n changes while busy and
+//     ends at the next start or where busy falls; its clocks are compared with the
+//     programmed 1/F minute (docs/interpolator.md section 5.4).
+// Plain C++ (no SystemC) so it is unit-tested on its own and reusable by other runners.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "interp_ports.h"
+#include "tape.h"
+
+namespace ncinterp::system {
+
+struct AxisPulses {
+  uint64_t plus = 0, minus = 0;
+};
+
+// One observed block: from its load edge to the edge where the next block loads or busy
+// falls. Consecutive tape blocks with the same N and no gap between them cannot be told
+// apart on the ports and form one observed block (its ideal time is their sum).
+struct BlockTiming {
+  uint32_t n = 0;
+  uint64_t load_cycle = 0;
+  uint64_t end_cycle = 0;          // 0 while playing
+  uint64_t pulses = 0;
+  bool saturated = false;          // feed_saturated_o seen during the block
+  size_t first_block = 0;          // index into Program::blocks
+  size_t block_count = 0;          // tape blocks it covers (0 = could not be matched)
+  double ideal_cycles = 0;         // programmed duration: 60 f_clk / F per block, summed
+  uint64_t cycles() const { return end_cycle - load_cycle; }
+};
+
+struct PlaySummary {
+  uint64_t cycles = 0;  // last cycle observed (the one done/error rose in, if it did)
+  bool done = false, error = false;
+  uint8_t error_code = 0;
+  uint32_t error_block = 0, error_offset = 0;
+  AxisPulses pulses_x, pulses_y;
+  int64_t final_x = 0, final_y = 0;
+  int64_t expected_x = 0, expected_y = 0;  // sum of the programmed blocks
+  uint64_t lead_in_cycles = 0;  // before the first block loads (reading the first block)
+  uint64_t gap_cycles = 0;      // idle between blocks: the reader was too slow
+  uint64_t busy_cycles = 0;
+  // Path error (BLU) and the L1 bound of the worst block (docs/interpolator.md 5.5).
+  double max_path_error = 0;
+  uint32_t max_path_error_block = 0;
+  bool path_within_bound = true;    // every pulse within its own block's bound
+  uint64_t pulses_beyond_program = 0;  // more pulses than the program has
+  size_t blocks_played = 0;          // tape blocks covered by observed blocks
+  std::vector<BlockTiming> timeline;
+  // Feed accuracy over blocks that are not saturated and were matched to the tape.
+  size_t timed_blocks = 0, saturated_blocks = 0;
+  double worst_relative_time_error = 0;  // (measured - ideal) / ideal
+  double worst_time_error_cycles = 0;    // measured - ideal, clocks
+  uint32_t worst_time_error_block = 0;
+};
+
+class PlayMonitor {
+ public:
+  // `feed_modulus` is M = 60 f_clk 10^FeedFracDigits; ideal block clocks are M / F.
+  PlayMonitor(const tape::Program& program, uint64_t feed_modulus);
+
+  // The outputs after edge `cycle` (0 = after reset). Call once per clock, in order.
+  void observe(uint64_t cycle, const InterpOutputs& o);
+  // Closes the last block and matches the observed blocks to the tape's blocks.
+  PlaySummary finish();
+
+  bool finished() const { return last_.done || last_.error; }
+  const InterpOutputs& last() const { return last_; }
+  // Progress: tape blocks whose pulses are complete.
+  size_t pulse_block() const { return cursor_; }
+
+ private:
+  void pulse(int64_t x, int64_t y);
+  void match_timeline();
+
+  const tape::Program& program_;
+  double feed_modulus_;
+  PlaySummary s_;
+  InterpOutputs last_;
+  bool started_ = false;  // a block has loaded
+  // Pulse-to-block assignment.
+  size_t cursor_ = 0;
+  uint64_t cursor_pulses_ = 0;
+  int64_t start_x_ = 0, start_y_ = 0;  // programmed start of block cursor_
+};
+
+// The L1 path bound of a line block: (|dx| + |dy|) / (2 sqrt(dx^2 + dy^2)), 0 for a zero move.
+double line_path_bound(int64_t dx, int64_t dy);
+// Distance from point (px, py) to the segment (0,0)-(dx,dy).
+double distance_to_segment(double px, double py, double dx, double dy);
+
+}  // namespace ncinterp::system

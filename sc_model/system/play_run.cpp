@@ -1,0 +1,111 @@
+// One `play` run (see play_run.h): configuration, cycle limit, VCD window and file, the
+// SystemC simulation, and the monitors' summary.
+#include "play_run.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+
+#include "atomic_file.h"
+#include "frame_source.h"
+
+namespace ncinterp::system {
+
+InterpConfig play_config(double clock_hz) {
+  InterpConfig cfg;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, cfg.feed_frac_digits);
+  return cfg;
+}
+
+tape::Format tape_format_for(const InterpConfig& cfg) {
+  tape::Format f;
+  f.frac_digits = cfg.frac_digits;
+  f.feed_frac_digits = cfg.feed_frac_digits;
+  f.inc_width = cfg.inc_width;
+  f.feed_width = cfg.feed_width;
+  f.seq_width = cfg.seq_width;
+  f.arcs = false;  // the interpolator has no circle mode yet: G02/G03 are error 6
+  return f;
+}
+
+uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t cycles_per_frame,
+                         const InterpConfig& cfg) {
+  uint64_t total = static_cast<uint64_t>(frames) * cycles_per_frame;
+  for (const tape::Block& b : program.blocks) {
+    const uint64_t m = static_cast<uint64_t>(std::max(std::llabs(b.dx), std::llabs(b.dy)));
+    unsigned k = 0;
+    while (k < 64 && (m >> k) != 0) ++k;
+    const uint64_t saturated = (k < 63 ? (1ull << k) : 0) + 1;
+    const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
+    total += std::max(saturated, programmed) + 3;
+  }
+  return 2 * total + 100000;
+}
+
+PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& program,
+                    const PlayOptions& opt) {
+  static bool used = false;
+  if (used) throw std::logic_error("run_play: SystemC cannot be restarted in one process");
+  used = true;
+  if (!(opt.clock_hz >= 1.0 && opt.clock_hz <= 1e11))
+    throw std::runtime_error("--clock-hz must be between 1 and 1e11");
+  if (!(opt.reader_cps > 0.0)) throw std::runtime_error("--reader-cps must be positive");
+
+  // No SystemC banner or info messages on stdout: the CLI's output is its own.
+  setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+
+  PlayResult r;
+  r.config = play_config(opt.clock_hz);
+  r.cycles_per_frame = FrameSource::cycles_per_frame_for(opt.clock_hz, opt.reader_cps);
+  r.frames = frames.size();
+  r.blocks_on_tape = program.blocks.size();
+  r.max_cycles = opt.max_cycles ? opt.max_cycles
+                                : cycle_limit_for(program, frames.size(), r.cycles_per_frame, r.config);
+
+  std::unique_ptr<AtomicOutputFile> vcd;
+  SystemSetup setup;
+  setup.config = r.config;
+  setup.engine = opt.engine;
+  setup.clock_hz = opt.clock_hz;
+  setup.max_cycles = r.max_cycles;
+  if (!opt.vcd_path.empty()) {
+    r.vcd_window = resolve_vcd_window(opt.vcd_from, opt.vcd_to, frames, r.config,
+                                      r.cycles_per_frame, r.max_cycles);
+    vcd = std::make_unique<AtomicOutputFile>(opt.vcd_path);
+    setup.vcd_path = vcd->temp_path();
+    setup.vcd_window = r.vcd_window;
+  }
+  if (opt.progress) {
+    const size_t blocks = program.blocks.size();
+    setup.progress = [&opt, blocks](uint64_t cycle, size_t done) { opt.progress(cycle, done, blocks); };
+  }
+
+  const auto t0 = std::chrono::steady_clock::now();
+  auto top = std::make_unique<SystemTop>("SystemC", setup, FrameSource(frames, r.cycles_per_frame),
+                                         program);
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);
+  top->start();
+  sc_core::sc_start();
+  top->finish();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.summary = top->monitor().finish();
+  r.limit_reached = top->limit_reached();
+  r.frames_taken = top->reader().source().frames_taken();
+
+  if (vcd) {
+    if (!top->vcd_started())
+      throw std::runtime_error(opt.vcd_path + ": the VCD window starts at cycle " +
+                               std::to_string(r.vcd_window.from) + ", after the run ended at cycle " +
+                               std::to_string(r.summary.cycles));
+    if (r.ok()) {
+      vcd->commit();
+      r.vcd_written = true;
+    }
+  }
+  return r;
+}
+
+}  // namespace ncinterp::system

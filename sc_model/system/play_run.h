@@ -1,0 +1,61 @@
+// One `play` run: a tape through the SystemC system model with the golden or RTL engine.
+// Idea: the caller loads the tape and reads it back (tape::parse_frames_partial) and gets
+// back everything the monitors measured; the VCD, if asked for, is written to a temporary
+// file beside the target and renamed into place only when the program played to its end
+// (M02/M30): a bad tape or a run cut off by the cycle limit leaves no VCD behind.
+// SystemC cannot be restarted: run_play may be called once per process.
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "play_monitor.h"
+#include "system_top.h"
+#include "tape.h"
+#include "vcd_window.h"
+
+namespace ncinterp::system {
+
+struct PlayOptions {
+  EngineKind engine = EngineKind::kGolden;
+  double clock_hz = 1e6;
+  double reader_cps = 1000;  // tape reader, characters (frames) per second
+  std::string vcd_path;      // empty: no VCD
+  std::optional<VcdBound> vcd_from, vcd_to;
+  uint64_t max_cycles = 0;   // 0: a safe bound computed from the tape
+  std::function<void(uint64_t cycle, size_t blocks_done, size_t blocks)> progress;
+};
+
+struct PlayResult {
+  PlaySummary summary;
+  InterpConfig config;
+  uint64_t cycles_per_frame = 0;
+  size_t frames = 0;
+  size_t blocks_on_tape = 0;  // motion blocks the software reader accepted
+  uint64_t frames_taken = 0;
+  uint64_t max_cycles = 0;
+  bool limit_reached = false;
+  CycleWindow vcd_window;
+  bool vcd_written = false;
+  double wall_seconds = 0;
+  // The program played to its end (done), within the cycle limit.
+  bool ok() const { return summary.done && !summary.error && !limit_reached; }
+};
+
+// The interpolator configuration `play` uses: default widths (those of the verilated RTL),
+// feed modulus for the clock.
+InterpConfig play_config(double clock_hz);
+// The tape format the interpolator with `cfg` decodes (no circle mode yet).
+tape::Format tape_format_for(const InterpConfig& cfg);
+// A cycle limit no correct engine reaches on this tape: reading every frame, then every
+// block at its programmed or saturated duration, doubled, plus a margin.
+uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t cycles_per_frame,
+                         const InterpConfig& cfg);
+
+// Throws std::runtime_error for options that cannot run (no RTL in this build, a VCD that
+// cannot be created, a window naming a block that never plays, a window after the end).
+PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& program,
+                    const PlayOptions& options);
+
+}  // namespace ncinterp::system

@@ -1,0 +1,148 @@
+// `ncinterp play TAPE`: plays a tape through the SystemC system model (tape reader at a
+// reader rate, golden or verilated-RTL interpolator, monitors) and reports what the machine
+// did: pulses, final position, path error, gaps, feed accuracy (sc_model/system/).
+// Outputs: --report (JSON), --vcd (waves, optionally a window --vcd-from/--vcd-to in cycles
+// or blocks). Exit 0 when the program played to M02/M30; 1 on a bad tape (one line
+// "TAPE: block N, offset K: message"), on unreadable input or unusable options. A bad tape
+// still gets its report (complete, status "error": it is the explanation of the failure),
+// but never a VCD; every file is written to a temporary and renamed, so nothing is ever
+// half-written (docs/waves.md).
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include "atomic_file.h"
+#include "command_registry.h"
+#include "play_report.h"
+#include "play_run.h"
+#include "tape.h"
+
+namespace ncinterp::cli {
+namespace {
+
+struct PlayArgs {
+  std::string tape;
+  std::string engine = "golden";
+  std::string vcd, vcd_from, vcd_to, report;
+  double clock_hz = 1e6;
+  double reader_cps = 1000.0;
+  uint64_t max_cycles = 0;
+};
+
+// Progress on stderr at most five times a second; erased at the end.
+class Progress {
+ public:
+  void operator()(uint64_t cycle, size_t done, size_t blocks) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(200)) return;
+    last_ = now;
+    std::fprintf(stderr, "\rplay: cycle %llu, block %zu of %zu   ",
+                 static_cast<unsigned long long>(cycle), done, blocks);
+    shown_ = true;
+  }
+  ~Progress() {
+    if (shown_) std::fprintf(stderr, "\r%60s\r", "");
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_{};
+  bool shown_ = false;
+};
+
+int run(const PlayArgs& a) {
+  using namespace ncinterp::system;
+  PlayOptions opt;
+  opt.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
+  opt.clock_hz = a.clock_hz;
+  opt.reader_cps = a.reader_cps;
+  opt.vcd_path = a.vcd;
+  opt.max_cycles = a.max_cycles;
+  if (!a.vcd_from.empty()) opt.vcd_from = parse_vcd_bound(a.vcd_from);
+  if (!a.vcd_to.empty()) opt.vcd_to = parse_vcd_bound(a.vcd_to);
+  if ((opt.vcd_from || opt.vcd_to) && a.vcd.empty())
+    throw std::invalid_argument("--vcd-from/--vcd-to need --vcd");
+  if (opt.engine == EngineKind::kRtl && !rtl_engine_available())
+    throw std::runtime_error("this build has no verilated SystemC RTL; use --engine golden");
+
+  const std::vector<uint8_t> frames = tape::load_frames(a.tape);
+  // The software reader's view of the tape: the programmed blocks the monitors judge the
+  // pulses against (every block before the first error, for a bad tape).
+  const tape::ParseResult readback =
+      tape::parse_frames_partial(frames, tape_format_for(play_config(a.clock_hz)));
+
+  Progress progress;
+  if (isatty(STDERR_FILENO)) opt.progress = std::ref(progress);
+  const PlayResult r = run_play(frames, readback.program, opt);
+  const nlohmann::json report = play_report(r, a.tape, a.engine, readback.error, a.reader_cps);
+  if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
+  if (!report["reader_agrees"].get<bool>())
+    std::cerr << a.tape << ": warning: the software tape reader and the " << a.engine
+              << " engine disagree about this tape"
+              << (readback.error ? " (reader: " + tape::describe(*readback.error) + ")" : "") << "\n";
+
+  if (const auto e = play_error(r, readback.error)) {
+    std::cerr << a.tape << ": block N" << e->block << ", offset " << e->offset << ": "
+              << e->message << "\n";
+    return 1;
+  }
+  const PlaySummary& s = r.summary;
+  std::printf("%s: %zu blocks, %llu cycles (%.3f s at %g Hz), final position X%.3f Y%.3f mm, "
+              "max path error %.3f BLU\n",
+              a.tape.c_str(), s.blocks_played, static_cast<unsigned long long>(s.cycles),
+              report["simulated_seconds"].get<double>(), a.clock_hz,
+              static_cast<double>(s.final_x) / std::pow(10.0, r.config.frac_digits),
+              static_cast<double>(s.final_y) / std::pow(10.0, r.config.frac_digits),
+              s.max_path_error);
+  if (r.vcd_written) std::printf("VCD: %s\n", a.vcd.c_str());
+  if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
+  return 0;
+}
+
+void setup(CLI::App& app) {
+  auto args = std::make_shared<PlayArgs>();
+  CLI::App* cmd = app.add_subcommand("play", "Play a tape through the SystemC system model");
+  cmd->add_option("tape", args->tape, "Tape: .tape (frames with parity) or plain text (.nc)")
+      ->required();
+  cmd->add_option("--engine", args->engine, "Interpolator: golden (C++ model) or rtl (verilated)")
+      ->check(CLI::IsMember({"golden", "rtl"}))
+      ->capture_default_str();
+  cmd->add_option("--vcd", args->vcd, "Write waves (VCD) to this file");
+  const auto bound_check = [](const std::string& s) -> std::string {
+    try {
+      ncinterp::system::parse_vcd_bound(s);
+      return {};
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+  };
+  cmd->add_option("--vcd-from", args->vcd_from, "VCD starts at this cycle (1000) or block (N12)")
+      ->check(bound_check);
+  cmd->add_option("--vcd-to", args->vcd_to, "VCD ends at this cycle (5000) or block's end (N12)")
+      ->check(bound_check);
+  cmd->add_option("--report", args->report, "Write the JSON report to this file");
+  cmd->add_option("--clock-hz", args->clock_hz, "Interpolator clock, Hz")->capture_default_str();
+  cmd->add_option("--reader-cps", args->reader_cps, "Tape reader speed, characters per second")
+      ->capture_default_str();
+  cmd->add_option("--max-cycles", args->max_cycles,
+                  "Stop (as an error) after this many cycles; 0 = a bound from the tape")
+      ->capture_default_str();
+  cmd->callback([args] {
+    int code;
+    try {
+      code = run(*args);
+    } catch (const std::exception& e) {
+      std::cerr << "ncinterp play: " << e.what() << "\n";
+      code = 1;
+    }
+    if (code != 0) throw CommandExit{code};
+  });
+}
+
+const CommandRegistration registration("play", setup);
+
+}  // namespace
+}  // namespace ncinterp::cli
