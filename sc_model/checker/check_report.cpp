@@ -84,7 +84,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["run_seconds"] = o.seconds;
   j["done"] = o.run.done;
   j["final_position"] = f.xy(c.position());
-  j["pulses"] = c.pulses().size();
+  j["pulse_clocks"] = c.pulse_count();
   j["path_error"] = stat_json(c.path_error(), c, f);
   j["path_error"]["measured_against"] = "the programmed block (chord or arc) from the tape";
   if (o.reference) {
@@ -160,7 +160,7 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
     return "block N" + std::to_string(c.blocks()[e.block].tape.n) + ", cycle " + std::to_string(e.cycle) +
            ", at (" + fmt("%.3f", x) + ", " + fmt("%.3f", y) + ") mm";
   };
-  s << ctx.tape_file << ": " << c.blocks().size() << " blocks, " << c.pulses().size() << " pulses, "
+  s << ctx.tape_file << ": " << c.blocks().size() << " blocks, " << c.pulse_count() << " pulse clocks, "
     << c.cycles() << " clocks on the " << engine_name(ctx.setup.engine) << " engine\n";
   const ErrorStat& p = c.path_error();
   s << "  interpolator error (to the programmed blocks): max " << fmt("%.4f", p.max * o.blu_mm)

@@ -214,6 +214,7 @@ void TrajectoryChecker::end_block(uint64_t cycle) {
 void TrajectoryChecker::on_pulse(uint64_t cycle, const bool step[2], const bool dir[2]) {
   const ProgrammedBlock& b = blocks_[cur_];
   BlockResult& r = results_[cur_];
+  ++pulse_count_;
   const int64_t d[2] = {b.tape.dx, b.tape.dy};
   for (int a = 0; a < 2; ++a) {
     if (!step[a]) continue;

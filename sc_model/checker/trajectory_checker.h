@@ -124,7 +124,8 @@ class TrajectoryChecker {
   const std::vector<BlockResult>& results() const { return results_; }
   const std::vector<Violation>& violations() const { return violations_; }
   uint64_t violation_count() const { return violation_count_; }
-  const std::vector<PulseSample>& pulses() const { return pulses_; }
+  const std::vector<PulseSample>& pulses() const { return pulses_; }  // if keep_pulses
+  uint64_t pulse_count() const { return pulse_count_; }  // clocks with a step on any axis
   const ErrorStat& path_error() const { return path_; }
   const ErrorStat& total_error() const { return total_; }
   IntPoint position() const { return pos_; }
@@ -163,6 +164,7 @@ class TrajectoryChecker {
   std::vector<Violation> violations_;
   uint64_t violation_count_ = 0;
   std::vector<PulseSample> pulses_;
+  uint64_t pulse_count_ = 0;
   ErrorStat path_, total_;
 };
 

@@ -1,16 +1,22 @@
 // Injected faults (golden model test hook, docs/interpolator.md section 9) must be caught by
-// the trajectory checker at the right block and clock.
+// the trajectory checker and by the lock-step scoreboard (golden vs verilated RTL), each at
+// the right block and clock.
 // Ground truth, from the engines only: the first clock at which the faulty golden run's
 // outputs differ from the clean run's, and the block N the outputs show there. The checker's
-// first report must name that clock and that N. A fault that changes no output (an
-// accumulator nudge that never moves a carry) must not be reported at all.
+// first report and the scoreboard's mismatch must both name that clock and that N. A fault
+// that changes no output (an accumulator nudge that never moves a carry) must not be
+// reported by either.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <random>
 
 #include "checker_test_support.h"
 #include "check_session.h"
 #include "frame_source.h"
+#ifdef NCINTERP_TEST_HAS_COSIM
+#include "lockstep.h"
+#endif
 
 namespace ncinterp::checker {
 namespace {
@@ -52,7 +58,7 @@ const Violation* earliest(const TrajectoryChecker& c) {
 
 class FaultDetection : public ::testing::TestWithParam<Fault::Kind> {};
 
-TEST_P(FaultDetection, CheckerReportsTheFirstDifferingClockAndBlock) {
+TEST_P(FaultDetection, CheckerAndScoreboardReportTheFirstDifferingClockAndBlock) {
   const Fault::Kind kind = GetParam();
   std::mt19937 rng(100 + static_cast<int>(kind));
   CheckSetup setup;
@@ -74,9 +80,20 @@ TEST_P(FaultDetection, CheckerReportsTheFirstDifferingClockAndBlock) {
     const std::string what = std::string(kind_name(kind)) + " on " + (f.axis ? "Y" : "X") +
                              " at cycle " + std::to_string(f.cycle) + " (trial " +
                              std::to_string(trial) + ")";
+#ifdef NCINTERP_TEST_HAS_COSIM
+    cosim::Options co;
+    co.config = cfg;
+    co.cycles_per_frame = 1;
+    co.fault = f;
+    const cosim::Result sb = cosim::run_lockstep(frames, co);
+#endif
     if (!m.visible) {
       ++invisible;
       EXPECT_EQ(out.checker->violation_count(), 0u) << what << ": no output changed, yet reported";
+#ifdef NCINTERP_TEST_HAS_COSIM
+      EXPECT_FALSE(sb.mismatch) << what << ": no output changed, yet the scoreboard reports "
+                                << cosim::describe(*sb.mismatch);
+#endif
       continue;
     }
     ++visible;
@@ -84,9 +101,21 @@ TEST_P(FaultDetection, CheckerReportsTheFirstDifferingClockAndBlock) {
     ASSERT_NE(v, nullptr) << what << ": outputs differ from cycle " << m.cycle << ", not reported";
     EXPECT_EQ(v->cycle, m.cycle) << what << ": " << rule_name(v->rule) << " " << v->detail;
     EXPECT_EQ(v->n, m.block_n) << what;
+#ifdef NCINTERP_TEST_HAS_COSIM
+    ASSERT_TRUE(sb.mismatch) << what << ": the scoreboard saw no mismatch";
+    EXPECT_EQ(sb.mismatch->cycle, m.cycle) << what << ": " << cosim::describe(*sb.mismatch);
+    EXPECT_EQ(sb.mismatch->block, m.block_n) << what << ": " << cosim::describe(*sb.mismatch);
+#endif
   }
+  std::cout << kind_name(kind) << ": " << visible << " faults changed the outputs (all reported at the right clock and block), " << invisible << " changed nothing\n";
   // The test means something only if most faults show.
   EXPECT_GE(visible, kind == Fault::kAccumulatorOffByOne ? 10 : 30) << invisible << " invisible";
+}
+
+TEST(FaultDetection, ScoreboardIsInThisBuild) {
+#ifndef NCINTERP_TEST_HAS_COSIM
+  GTEST_SKIP() << "no verilated RTL / cosim library in this build: scoreboard half not run";
+#endif
 }
 
 INSTANTIATE_TEST_SUITE_P(AllKinds, FaultDetection,
