@@ -1,6 +1,7 @@
 // JSON report of a play run (see play_report.h).
 #include "play_report.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncinterp::system {
@@ -60,6 +61,10 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
                {"worst_relative_time_error", s.worst_relative_time_error},
                {"worst_time_error_cycles", s.worst_time_error_cycles},
                {"worst_block", s.worst_time_error_block}};
+  if (!r.vcd_path.empty())  // edges from_cycle..to_cycle; no file when the run failed
+    j["vcd"] = {{"file", r.vcd_written ? nlohmann::json(r.vcd_path) : nlohmann::json()},
+                {"from_cycle", r.vcd_window.from},
+                {"to_cycle", std::min(r.vcd_window.to, s.cycles)}};
   j["cycle_limit"] = r.max_cycles;
   j["wall_seconds"] = r.wall_seconds;
   // The software reader (sw/tape) and the engine's decoder apply the same rules: they must

@@ -36,6 +36,7 @@ struct PlayResult {
   uint64_t frames_taken = 0;
   uint64_t max_cycles = 0;
   bool limit_reached = false;
+  std::string vcd_path;  // as asked for (empty: none)
   CycleWindow vcd_window;
   bool vcd_written = false;
   double wall_seconds = 0;
