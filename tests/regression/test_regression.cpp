@@ -27,6 +27,8 @@ struct Example {
   double feed_mm_min = 20000;
 };
 
+void PrintTo(const Example& e, std::ostream* os) { *os << e.name; }
+
 Case case_of(const Example& e) {
   Case c;
   c.name = e.name;
