@@ -20,8 +20,9 @@ std::optional<PlayErrorText> play_error(const PlayResult& r,
   }
   if (r.limit_reached)
     return PlayErrorText{s.timeline.empty() ? 0 : s.timeline.back().n, r.frames_taken,
-                         "simulation limit of " + std::to_string(r.max_cycles) +
-                             " cycles reached before the end of the program"};
+                         "stopped at the cycle limit (" + std::to_string(r.max_cycles) +
+                             " cycles) before the end of the program; block = the last "
+                             "block loaded, offset = frames read"};
   return std::nullopt;
 }
 

@@ -44,9 +44,11 @@ class Progress {
                  static_cast<unsigned long long>(cycle), done, blocks);
     shown_ = true;
   }
-  ~Progress() {
+  void clear() {
     if (shown_) std::fprintf(stderr, "\r%60s\r", "");
+    shown_ = false;
   }
+  ~Progress() { clear(); }
 
  private:
   std::chrono::steady_clock::time_point last_{};
@@ -77,6 +79,7 @@ int run(const PlayArgs& a) {
   Progress progress;
   if (isatty(STDERR_FILENO)) opt.progress = std::ref(progress);
   const PlayResult r = run_play(frames, readback.program, opt);
+  progress.clear();
   const nlohmann::json report = play_report(r, a.tape, a.engine, readback.error, a.reader_cps);
   if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
   if (!report["reader_agrees"].get<bool>())

@@ -135,6 +135,16 @@ TEST_F(PlayCli, BadTapeGivesOneLineAnErrorReportAndNoVcd) {
   EXPECT_EQ(j["reader_agrees"], true);
 }
 
+TEST_F(PlayCli, CycleLimitIsAnErrorWithoutVcd) {
+  EXPECT_EQ(play(kGear + " --max-cycles 100000 --vcd " + path("l.vcd") + " --report " + path("l.json")), 1);
+  EXPECT_NE(stderr_.find("cycle limit"), std::string::npos) << stderr_;
+  EXPECT_EQ(files(), (std::vector<std::string>{"l.json"}));
+  const nlohmann::json j = nlohmann::json::parse(slurp(path("l.json")));
+  EXPECT_EQ(j["status"], "error");
+  EXPECT_EQ(j["cycles"], 100000);
+  EXPECT_TRUE(j["vcd"]["file"].is_null());
+}
+
 TEST_F(PlayCli, UnreadableInputNamesTheFile) {
   EXPECT_EQ(play(path("none.tape") + " --report " + path("r.json")), 1);
   EXPECT_NE(stderr_.find(path("none.tape")), std::string::npos) << stderr_;
