@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   limits.arcs_circle_allowed = a.arcs;
 
   const auto t0 = std::chrono::steady_clock::now();
-  uint64_t failures = 0, clocks = 0, runs = 0;
+  uint64_t failures = 0, clocks = 0, runs = 0, skipped = 0;
   double worst_ratio = 0.0;
   std::string worst_case;
   for (uint64_t i = 0; i < a.cases; ++i) {
@@ -119,6 +119,13 @@ int main(int argc, char** argv) {
     }
     for (checker::EngineKind engine : engines) {
       c.check.engine = engine;
+      if (engine == checker::EngineKind::kRtl &&
+          (c.first_stage.width != 16 || c.first_stage.blu_mm != 0.001)) {
+        // The verilated RTL has the default parameters only (W 16, 3 fraction digits).
+        ++skipped;
+        std::printf("%s rtl: not run (RTL built for W 16, BLU 0.001)\n", c.name.c_str());
+        continue;
+      }
       std::string line;
       try {
         const checker::CheckOutcome out = regression::run_case(c);
@@ -149,8 +156,9 @@ int main(int argc, char** argv) {
     }
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("soak: %llu cases, %llu runs, %llu failed; worst total error %.0f%% of tol (%s); %.3g clocks in %.1f s\n",
+  std::printf("soak: %llu cases, %llu runs (%llu RTL runs not possible), %llu failed; worst total error %.0f%% of tol (%s); %.3g clocks in %.1f s\n",
               static_cast<unsigned long long>(a.cases), static_cast<unsigned long long>(runs),
+              static_cast<unsigned long long>(skipped),
               static_cast<unsigned long long>(failures), 100 * worst_ratio, worst_case.c_str(),
               static_cast<double>(clocks), secs);
   return failures ? 1 : 0;
