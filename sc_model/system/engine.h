@@ -39,7 +39,4 @@ std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg,
                                         InterpSignals& signals, bool with_trace);
 bool rtl_engine_available();
 
-// Name of the scope under which both engines' ports appear in a VCD (with the root).
-inline constexpr const char* kVcdPortScope = "SystemC.interp.interp_top";
-
 }  // namespace ncinterp::system

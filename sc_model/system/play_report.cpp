@@ -2,7 +2,6 @@
 #include "play_report.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace ncinterp::system {
 
@@ -28,11 +27,8 @@ std::optional<PlayErrorText> play_error(const PlayResult& r,
 
 nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
                            const std::string& engine_name,
-                           const std::optional<tape::TapeErrorInfo>& reader_error,
-                           double reader_cps) {
+                           const std::optional<tape::TapeErrorInfo>& reader_error) {
   const PlaySummary& s = r.summary;
-  const double clock_hz = static_cast<double>(r.config.feed_modulus) /
-                          (60.0 * std::pow(10.0, r.config.feed_frac_digits));
   nlohmann::json j;
   j["tape"] = tape_path;
   j["engine"] = engine_name;
@@ -40,7 +36,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["blocks"] = s.blocks_played;
   j["blocks_on_tape"] = r.blocks_on_tape;
   j["cycles"] = s.cycles;
-  j["simulated_seconds"] = static_cast<double>(s.cycles) / clock_hz;
+  j["simulated_seconds"] = static_cast<double>(s.cycles) / r.clock_hz;
   j["pulses"] = {{"x", {{"plus", s.pulses_x.plus}, {"minus", s.pulses_x.minus}}},
                  {"y", {{"plus", s.pulses_y.plus}, {"minus", s.pulses_y.minus}}}};
   j["final_position_blu"] = {{"x", s.final_x}, {"y", s.final_y}};
@@ -49,8 +45,8 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["max_path_error_block"] = s.max_path_error_block;
   j["path_within_l1_bound"] = s.path_within_bound;
   j["pulses_beyond_program"] = s.pulses_beyond_program;
-  j["clock_hz"] = clock_hz;
-  j["reader_cps"] = reader_cps;
+  j["clock_hz"] = r.clock_hz;
+  j["reader_cps"] = r.reader_cps;
   j["cycles_per_frame"] = r.cycles_per_frame;
   j["frames"] = r.frames;
   j["frames_read"] = r.frames_taken;

@@ -26,7 +26,6 @@ std::optional<PlayErrorText> play_error(const PlayResult& r,
 
 nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
                            const std::string& engine_name,
-                           const std::optional<tape::TapeErrorInfo>& reader_error,
-                           double reader_cps);
+                           const std::optional<tape::TapeErrorInfo>& reader_error);
 
 }  // namespace ncinterp::system

@@ -59,6 +59,8 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
 
   PlayResult r;
   r.config = play_config(opt.clock_hz);
+  r.clock_hz = opt.clock_hz;
+  r.reader_cps = opt.reader_cps;
   r.cycles_per_frame = FrameSource::cycles_per_frame_for(opt.clock_hz, opt.reader_cps);
   r.frames = frames.size();
   r.blocks_on_tape = program.blocks.size();

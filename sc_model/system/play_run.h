@@ -30,6 +30,8 @@ struct PlayOptions {
 struct PlayResult {
   PlaySummary summary;
   InterpConfig config;
+  double clock_hz = 0;
+  double reader_cps = 0;
   uint64_t cycles_per_frame = 0;
   size_t frames = 0;
   size_t blocks_on_tape = 0;  // motion blocks the software reader accepted

@@ -80,7 +80,7 @@ int run(const PlayArgs& a) {
   if (isatty(STDERR_FILENO)) opt.progress = std::ref(progress);
   const PlayResult r = run_play(frames, readback.program, opt);
   progress.clear();
-  const nlohmann::json report = play_report(r, a.tape, a.engine, readback.error, a.reader_cps);
+  const nlohmann::json report = play_report(r, a.tape, a.engine, readback.error);
   if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
   if (!report["reader_agrees"].get<bool>())
     std::cerr << a.tape << ": warning: the software tape reader and the " << a.engine
