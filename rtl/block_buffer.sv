@@ -6,7 +6,7 @@
 // Timing: in_ready_o = empty (a register), so a block is taken at an edge where the
 // buffer is empty, never in the edge that empties it; pop_i empties it at that edge.
 module block_buffer #(
-  parameter int unsigned Width = 8
+  parameter int Width = 8
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,

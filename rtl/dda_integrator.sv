@@ -8,7 +8,7 @@
 // iterate_i the carry (carry_o, combinational) becomes step_o for one clock. dir_o changes
 // only at load edges, so it is valid in every clock with a step and held for the block.
 module dda_integrator #(
-  parameter int unsigned Width = 16
+  parameter int Width = 16
 ) (
   input  logic           clk_i,
   input  logic           rst_ni,
@@ -31,20 +31,21 @@ module dda_integrator #(
   logic [Width:0] sum;
 
   always_comb begin
-    sum     = {1'b0, acc_q} + {1'b0, inc_q};
-    carry_o = iterate_i & |(sum & kpow_i);
-
-    acc_d  = acc_q;
-    inc_d  = inc_q;
-    dir_d  = dir_q;
-    step_d = 1'b0;
+    sum     = '0;
+    carry_o = 1'b0;
+    acc_d   = acc_q;
+    inc_d   = inc_q;
+    dir_d   = dir_q;
+    step_d  = 1'b0;
     if (load_i) begin
       acc_d = start_i;
       inc_d = inc_i;
       dir_d = !neg_i;
     end else if (iterate_i) begin
-      acc_d  = sum[Width-1:0] & ~kpow_i[Width-1:0];  // sum < 2^(k+1): clearing bit k subtracts 2^k
-      step_d = carry_o;
+      sum     = {1'b0, acc_q} + {1'b0, inc_q};
+      carry_o = |(sum & kpow_i);
+      acc_d   = sum[Width-1:0] & ~kpow_i[Width-1:0];  // sum < 2^(k+1): clearing bit k subtracts 2^k
+      step_d  = carry_o;
     end
   end
 

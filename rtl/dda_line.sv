@@ -8,8 +8,8 @@
 // rem_zero_o marks the block's finishing clock (all iterations done), after which
 // interp_top loads the next block or goes idle.
 module dda_line #(
-  parameter int unsigned IncWidth = 16,
-  parameter int unsigned KWidth   = $clog2(IncWidth + 1)
+  parameter int IncWidth = 16,
+  parameter int KWidth   = $clog2(IncWidth + 1)
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,

@@ -9,10 +9,10 @@
 // and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
 // registers and acts in the same edge as the DDA iteration it triggers.
 module feed_generator #(
-  parameter int unsigned FeedWidth    = 32,
-  parameter int unsigned IncWidth     = 16,
-  parameter int unsigned ModulusWidth = 48,
-  parameter int unsigned KWidth       = $clog2(IncWidth + 1)
+  parameter int FeedWidth    = 32,
+  parameter int IncWidth     = 16,
+  parameter int ModulusWidth = 48,
+  parameter int KWidth       = $clog2(IncWidth + 1)
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -26,9 +26,9 @@ module feed_generator #(
 );
 
   // phase + S < 2M when not saturated, and S itself needs FeedWidth + IncWidth bits.
-  localparam int unsigned SumWidth   = FeedWidth + IncWidth > ModulusWidth ? FeedWidth + IncWidth
+  localparam int SumWidth   = FeedWidth + IncWidth > ModulusWidth ? FeedWidth + IncWidth
                                                                            : ModulusWidth;
-  localparam int unsigned PhaseWidth = SumWidth + 1;
+  localparam int PhaseWidth = SumWidth + 1;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
   // logic depends on an input combinationally). Valid from the first clock after reset,
@@ -42,13 +42,13 @@ module feed_generator #(
   logic [PhaseWidth-1:0] step_load, sum, modulus;
   logic                  reached;
 
+  // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
-    modulus   = PhaseWidth'(modulus_q);
-    step_load = '0;
-    sum       = phase_q + step_q;
-    reached   = sum >= modulus;
-    strobe_o  = run_i & (saturated_q | reached);
-
+    modulus     = PhaseWidth'(modulus_q);
+    step_load   = '0;
+    sum         = '0;
+    reached     = 1'b0;
+    strobe_o    = 1'b0;
     step_d      = step_q;
     phase_d     = phase_q;
     saturated_d = saturated_q;
@@ -57,8 +57,15 @@ module feed_generator #(
       step_d      = step_load;
       phase_d     = step_load;
       saturated_d = step_load >= modulus;
-    end else if (run_i && !saturated_q) begin
-      phase_d = reached ? sum - modulus : sum;
+    end else if (run_i) begin
+      if (saturated_q) begin
+        strobe_o = 1'b1;
+      end else begin
+        sum      = phase_q + step_q;
+        reached  = sum >= modulus;
+        strobe_o = reached;
+        phase_d  = reached ? sum - modulus : sum;
+      end
     end
   end
 

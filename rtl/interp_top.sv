@@ -10,20 +10,20 @@
 // error found while decoding is raised only when no good block is left to play.
 module interp_top #(
   // Increment register width W: |dx|, |dy|, |i|, |j| of a block <= 2^IncWidth - 1 BLU.
-  parameter int unsigned IncWidth       = 16,
+  parameter int IncWidth       = 16,
   // Fraction digits of X, Y, I, J on tape: BLU = 10^-FracDigits mm.
-  parameter int unsigned FracDigits     = 3,
+  parameter int FracDigits     = 3,
   // F register (units of 10^-FeedFracDigits 1/min) and its fraction digits on tape.
-  parameter int unsigned FeedWidth      = 32,
-  parameter int unsigned FeedFracDigits = 3,
+  parameter int FeedWidth      = 32,
+  parameter int FeedFracDigits = 3,
   // Signed position counters, BLU.
-  parameter int unsigned PosWidth       = 32,
+  parameter int PosWidth       = 32,
   // N (block sequence number).
-  parameter int unsigned SeqWidth       = 20,
+  parameter int SeqWidth       = 20,
   // Frame offset counter (error reports).
-  parameter int unsigned OffsetWidth    = 32,
+  parameter int OffsetWidth    = 32,
   // Width of feed_modulus_i.
-  parameter int unsigned ModulusWidth   = 48
+  parameter int ModulusWidth   = 48
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -52,10 +52,10 @@ module interp_top #(
   output logic                    feed_saturated_o
 );
 
-  localparam int unsigned KWidth = $clog2(IncWidth + 1);
+  localparam int KWidth = $clog2(IncWidth + 1);
   // A decoded block as the buffer stores it: N, motion, dx, dy, i, j (sign + magnitude), F,
   // and the DDA's k.
-  localparam int unsigned BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + FeedWidth + KWidth;
+  localparam int BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + FeedWidth + KWidth;
 
   // Decoder -> buffer.
   logic                   dec_valid, buf_ready;

@@ -4,7 +4,7 @@
 // Timing: it counts at the same edge as the step register is set, so after an edge the
 // step output and the position that includes it appear together.
 module position_counter #(
-  parameter int unsigned PosWidth = 32
+  parameter int PosWidth = 32
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,

@@ -17,16 +17,16 @@
 // All outputs are functions of registers.
 module tape_decoder #(
   // Increment register width W: |X|, |Y|, |I|, |J| <= 2^IncWidth - 1 BLU.
-  parameter int unsigned IncWidth       = 16,
+  parameter int IncWidth       = 16,
   // Fraction digits of X, Y, I, J on tape (exactly this many).
-  parameter int unsigned FracDigits     = 3,
+  parameter int FracDigits     = 3,
   // F register width and fraction digits.
-  parameter int unsigned FeedWidth      = 32,
-  parameter int unsigned FeedFracDigits = 3,
+  parameter int FeedWidth      = 32,
+  parameter int FeedFracDigits = 3,
   // N register width.
-  parameter int unsigned SeqWidth       = 20,
+  parameter int SeqWidth       = 20,
   // Frame offset counter width (error reports).
-  parameter int unsigned OffsetWidth    = 32
+  parameter int OffsetWidth    = 32
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -63,16 +63,16 @@ module tape_decoder #(
 
   // The number accumulator holds any word's value; a digit is checked against the word's
   // limit in NumWidth + 4 bits (num * 10 + 9 cannot overflow that).
-  localparam int unsigned NumWidth0 = IncWidth > FeedWidth ? IncWidth : FeedWidth;
-  localparam int unsigned NumWidth1 = NumWidth0 > SeqWidth ? NumWidth0 : SeqWidth;
-  localparam int unsigned NumWidth  = NumWidth1 > 7 ? NumWidth1 : 7;
-  localparam int unsigned WideWidth = NumWidth + 4;
+  localparam int NumWidth0 = IncWidth > FeedWidth ? IncWidth : FeedWidth;
+  localparam int NumWidth1 = NumWidth0 > SeqWidth ? NumWidth0 : SeqWidth;
+  localparam int NumWidth  = NumWidth1 > 7 ? NumWidth1 : 7;
+  localparam int WideWidth = NumWidth + 4;
 
   localparam logic [WideWidth-1:0] IncLimit  = {{(WideWidth - IncWidth){1'b0}}, {IncWidth{1'b1}}};
   localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
   localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
   localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
-  localparam int unsigned KWidth = $clog2(IncWidth + 1);
+  localparam int KWidth = $clog2(IncWidth + 1);
   localparam logic [3:0] FracCount     = 4'(FracDigits);
   localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
 
@@ -183,7 +183,7 @@ module tape_decoder #(
   // Bit length of a value (position of its highest 1 plus one; 0 for 0).
   function automatic logic [KWidth-1:0] bit_length(input logic [IncWidth-1:0] value);
     bit_length = '0;
-    for (int unsigned b = 0; b < IncWidth; b++) begin
+    for (int b = 0; b < IncWidth; b++) begin
       if (value[b]) bit_length = KWidth'(b + 1);
     end
   endfunction
@@ -403,7 +403,8 @@ module tape_decoder #(
       end
     end else if (state_q == StHold) begin
       if (blk_ready_i) begin
-        state_d = end_blk_q ? StEnd : StBody;
+        if (end_blk_q) state_d = StEnd;
+        else state_d = StBody;
         n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
         dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
         dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;

@@ -1,0 +1,122 @@
+// Arc preparation in the decoder: checks an arc block and dry-runs its circle DDA.
+//
+// What: while the decoder holds a complete arc block (run_i), this module (a) checks it:
+// zero radius, quadrant and register width at once (arc_geometry.sv), and the end's
+// distance to the circle with a bit-serial squarer (arc_radius_check.sv, 2W + 3 clocks);
+// and (b) runs the block's circle DDA once without pulses, one iteration per clock, adding
+// F at every iteration. When both are over, S = F * N (N = the block's iteration count)
+// goes with the block, and the feed generator plays the N iterations in M / F clocks, as
+// it plays the 2^k iterations of a line (docs/circle-dda.md section 4). A failed radius
+// check stops the dry run. The golden twin is sc_model/golden/arc_prepare.cpp.
+// Timing: the first clock with run_i is the start edge: a geometric error makes done_o
+// high in that clock; otherwise the dry run iterates at the next edges and done_o rises
+// in the clock after the later of the last iteration and the last check step, i.e.
+// max(N, 2W + 3) clocks after the start edge. done_o and the error are combinational
+// from registers (and the held block); the decoder acts on them at that edge.
+module arc_prepare #(
+  parameter int IncWidth  = 16,
+  parameter int FeedWidth = 32,
+  parameter int KWidth    = $clog2(IncWidth + 1),
+  // S = F * N with N < 2^(W+1).
+  parameter int StepWidth = FeedWidth + IncWidth + 1
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 run_i,       // the decoder holds an arc block
+  input  logic [IncWidth-1:0]  dx_i,
+  input  logic                 dx_neg_i,
+  input  logic [IncWidth-1:0]  dy_i,
+  input  logic                 dy_neg_i,
+  input  logic [IncWidth-1:0]  i_i,
+  input  logic                 i_neg_i,
+  input  logic [IncWidth-1:0]  j_i,
+  input  logic                 j_neg_i,
+  input  logic                 ccw_i,
+  input  logic [FeedWidth-1:0] feed_i,
+  output logic                 done_o,      // the result is final in this clock
+  output logic                 err_o,       // ... and it is an error
+  output logic [3:0]           err_code_o,
+  output logic [StepWidth-1:0] step_o       // S = F * N (valid at done without error)
+);
+
+  localparam logic [3:0] ErrOffCircle = 4'd11;
+
+  // running_q: the arc's dry run and radius check are in progress (after the start edge).
+  // step_q: F summed once per dry-run iteration.
+  logic                 running_q, running_d;
+  logic [StepWidth-1:0] step_q, step_d;
+
+  logic                start;
+  logic [IncWidth-1:0] x0, y0, x1, y1;
+  logic                grow_x, grow_y, geo_err;
+  logic [3:0]          geo_code;
+  logic [KWidth-1:0]   k;
+  logic                dry_done, check_done, check_ok;
+
+  // The dry run emits no pulses and has no direction.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic                dry_carry_x, dry_carry_y, dry_step_x, dry_step_y, dry_dir_x, dry_dir_y;
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  assign start = run_i && !running_q;
+
+  arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth)) u_geometry (
+    .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
+    .x0_o(x0), .y0_o(y0), .x1_o(x1), .y1_o(y1), .grow_x_o(grow_x), .grow_y_o(grow_y),
+    .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
+  );
+
+  dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
+    .clk_i, .rst_ni,
+    .load_i(start), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i),
+    .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
+    .strobe_i(running_q),
+    .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),
+    .dir_x_o(dry_dir_x), .step_y_o(dry_step_y), .dir_y_o(dry_dir_y),
+    .done_o(dry_done)
+  );
+
+  arc_radius_check #(.IncWidth(IncWidth)) u_radius (
+    .clk_i, .rst_ni, .start_i(start),
+    .x0_i(x0), .y0_i(y0), .x1_i(x1), .y1_i(y1),
+    .done_o(check_done), .ok_o(check_ok)
+  );
+
+  always_comb begin
+    done_o     = 1'b0;
+    err_o      = 1'b0;
+    err_code_o = ErrOffCircle;
+    if (start && geo_err) begin
+      done_o     = 1'b1;
+      err_o      = 1'b1;
+      err_code_o = geo_code;
+    end else if (running_q && check_done && (!check_ok || dry_done)) begin
+      done_o = 1'b1;
+      err_o  = !check_ok;
+    end
+
+    running_d = running_q;
+    step_d    = step_q;
+    if (start) begin
+      running_d = !geo_err;
+      step_d    = '0;
+    end else if (!run_i || done_o) begin
+      running_d = 1'b0;
+    end else if (!dry_done) begin
+      step_d = step_q + StepWidth'(feed_i);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      running_q <= 1'b0;
+      step_q    <= '0;
+    end else begin
+      running_q <= running_d;
+      step_q    <= step_d;
+    end
+  end
+
+  assign step_o = step_q;
+
+endmodule
