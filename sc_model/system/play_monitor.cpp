@@ -45,7 +45,8 @@ void PlayMonitor::observe(uint64_t cycle, const InterpOutputs& o) {
   // Block boundaries: a load shows as busy rising or block_n changing while busy.
   const bool load = o.busy && (!last_.busy || o.block_n != last_.block_n);
   const bool ends = last_.busy && (!o.busy || load);
-  if (ends) s_.timeline.back().end_cycle = cycle;
+  // (A timeline is empty only if an engine came out of reset busy: not a block to time.)
+  if (ends && !s_.timeline.empty()) s_.timeline.back().end_cycle = cycle;
   if (load) {
     BlockTiming t;
     t.n = o.block_n;
@@ -55,7 +56,7 @@ void PlayMonitor::observe(uint64_t cycle, const InterpOutputs& o) {
   }
   if (o.busy) {
     ++s_.busy_cycles;
-    if (o.feed_saturated) s_.timeline.back().saturated = true;
+    if (o.feed_saturated && !s_.timeline.empty()) s_.timeline.back().saturated = true;
   } else if (!o.done && !o.error) {
     ++(started_ ? s_.gap_cycles : s_.lead_in_cycles);
   }
