@@ -2,7 +2,7 @@
 // block boundaries ("N12": the start or the end of the first block N12).
 // Idea: a whole part at full clock makes a huge VCD, so the tracer is opened late and
 // closed early. Block bounds are turned into cycles before the run by a quick pass of the
-// golden cycle model (plain C++, >100 M cycles/s): the RTL has the same cycle timing (the
+// golden cycle model (plain C++, no SystemC): the RTL has the same cycle timing (the
 // cosim checks it every clock), so the window is exact for both engines, and the VCD can
 // start half a clock before the block's load edge instead of after it.
 #pragma once
