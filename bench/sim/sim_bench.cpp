@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -55,6 +56,10 @@ struct Options {
   std::string rtl_dir = NCINTERP_RTL_DIR;
   std::string tb = NCINTERP_TB;
   bool skip_icarus = false, skip_system = false;
+  std::vector<std::string> engines;  // empty: all
+  bool wants(const std::string& e) const {
+    return engines.empty() || std::find(engines.begin(), engines.end(), e) != engines.end();
+  }
 };
 
 struct Row {
@@ -233,28 +238,32 @@ int run(const Options& o) {
   if (!reference.outputs().done) throw std::runtime_error(o.tape + ": the program does not play to done");
 
   std::vector<Row> rows;
-  rows.push_back(measure("golden", o.seconds, want, [&] {
-    GoldenInterp g(cfg);
-    return play(g, frames, cpf, limit);
-  }));
-  rows.push_back(measure("rtl", o.seconds, want, [&] {
-    VerilatedInterp<Vinterp_top> rtl(cfg);
-    return play_rtl(rtl, frames, cpf, limit);
-  }));
-  rows.push_back(measure("rtl-trace-off", o.seconds, want, [&] {
-    VerilatedInterp<Vinterp_top_trace> rtl(cfg);
-    return play_rtl(rtl, frames, cpf, limit);
-  }));
+  if (o.wants("golden"))
+    rows.push_back(measure("golden", o.seconds, want, [&] {
+      GoldenInterp g(cfg);
+      return play(g, frames, cpf, limit);
+    }));
+  if (o.wants("rtl"))
+    rows.push_back(measure("rtl", o.seconds, want, [&] {
+      VerilatedInterp<Vinterp_top> rtl(cfg);
+      return play_rtl(rtl, frames, cpf, limit);
+    }));
+  if (o.wants("rtl-trace-off"))
+    rows.push_back(measure("rtl-trace-off", o.seconds, want, [&] {
+      VerilatedInterp<Vinterp_top_trace> rtl(cfg);
+      return play_rtl(rtl, frames, cpf, limit);
+    }));
   cosim::Options co;
   co.config = cfg;
   co.cycles_per_frame = cpf;
   co.max_cycles = limit;
-  rows.push_back(measure("cosim", o.seconds, want, [&] {
-    const cosim::Result r = cosim::run_lockstep(frames, co);
-    if (r.mismatch) throw std::runtime_error("cosim: " + cosim::describe(*r.mismatch));
-    return EndState{r.cycles, r.last.pos_x, r.last.pos_y};
-  }));
-  {
+  if (o.wants("cosim"))
+    rows.push_back(measure("cosim", o.seconds, want, [&] {
+      const cosim::Result r = cosim::run_lockstep(frames, co);
+      if (r.mismatch) throw std::runtime_error("cosim: " + cosim::describe(*r.mismatch));
+      return EndState{r.cycles, r.last.pos_x, r.last.pos_y};
+    }));
+  if (o.wants("rtl-vcd")) {
     // VCD of every signal for the first vcd_cycles clocks (compare with the golden model
     // stopped at the same clock).
     GoldenInterp g(cfg);
@@ -276,8 +285,9 @@ int run(const Options& o) {
     row.note = note.str();
     rows.push_back(row);
   }
-  if (!o.skip_icarus) rows.push_back(measure_icarus(o, frames, cpf, cfg, work));
+  if (!o.skip_icarus && o.wants("icarus")) rows.push_back(measure_icarus(o, frames, cpf, cfg, work));
   for (const char* engine : {"golden", "rtl"}) {
+    if (!o.wants(std::string("system-") + engine)) continue;
     if (o.skip_system || !fs::exists(o.ncinterp)) {
       rows.push_back(Row{std::string("system-") + engine, 0, 0, 0, "not measured (no ncinterp)", false});
     } else {
@@ -316,6 +326,9 @@ int main(int argc, char** argv) {
   app.add_option("--vcd-cycles", o.vcd_cycles, "cycles traced to the VCD")->capture_default_str();
   app.add_option("--icarus-cycles", o.icarus_cycles, "cycles simulated by Icarus")->capture_default_str();
   app.add_option("--ncinterp", o.ncinterp, "ncinterp executable (system model rows)")->capture_default_str();
+  app.add_option("--engines", o.engines,
+                 "only these rows: golden rtl rtl-trace-off cosim rtl-vcd icarus system-golden system-rtl")
+      ->delimiter(',');
   app.add_flag("--skip-icarus", o.skip_icarus, "do not run Icarus Verilog");
   app.add_flag("--skip-system", o.skip_system, "do not run the SystemC system model");
   CLI11_PARSE(app, argc, argv);

@@ -29,8 +29,9 @@ void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, d
     const bool ready = rtl.frame_ready();
     const bool dumping = cycle >= first_cycle;
     rtl.tick(source.inputs(), [&](int phase) {
-      // clk low half a period before the edge, the edge at cycle * period
-      if (dumping) vcd.dump(cycle * period - (phase == 0 ? period / 2 : 0));
+      // docs/waves.md time base: the reset edge (cycle 0) at one period, edge c at
+      // (c + 1) periods; clk low half a period before the edge.
+      if (dumping) vcd.dump((cycle + 1) * period - (phase == 0 ? period / 2 : 0));
     });
     source.clock(ready);
   }

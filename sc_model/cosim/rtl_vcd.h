@@ -2,7 +2,9 @@
 // Idea: the RTL with its own FrameSource is deterministic, so re-running the trace-enabled
 // model (Vinterp_top_trace) from reset reproduces exactly the clocks of a lock-step run;
 // only the window [first_cycle, last_cycle] is dumped, so a mismatch found after a billion
-// clocks still gives a small file. Scopes: TOP.interp_top.<instance>.<signal>.
+// clocks still gives a small file. Scopes and time base as the system model's VCDs
+// (docs/waves.md): SystemC.interp.interp_top.<instance>.<signal>, 1 ps, edge c at
+// (c + 1) clock periods.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -12,8 +14,8 @@
 
 namespace ncinterp::cosim {
 
-// Writes path atomically (AtomicOutputFile: temporary file + rename). The time axis is in ps at clock_hz:
-// the rising edge of cycle c is at c * period. Throws std::runtime_error on I/O failure.
+// Writes path atomically (AtomicOutputFile: temporary file + rename); clk_hz sets the
+// period. Throws std::runtime_error on I/O failure.
 void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
                    uint64_t first_cycle, uint64_t last_cycle, const std::string& path);
 

@@ -16,11 +16,15 @@ namespace ncinterp {
 template <class Model>
 class VerilatedInterp {
  public:
+  // Instance name: VCD scopes are SystemC.interp.interp_top.<...>, as in the system
+  // model's VCDs (docs/waves.md), so one GTKWave save file opens both.
+  static constexpr const char* kScope = "SystemC.interp";
+
   // The RTL is verilated with its default parameters: cfg must have them (only
   // feed_modulus, an input port, is free).
   explicit VerilatedInterp(const InterpConfig& cfg)
       : context_(std::make_unique<VerilatedContext>()),
-        model_(std::make_unique<Model>(context_.get(), "TOP")),
+        model_(std::make_unique<Model>(context_.get(), kScope)),
         modulus_(cfg.feed_modulus) {
     const InterpConfig rtl;
     if (cfg.inc_width != rtl.inc_width || cfg.frac_digits != rtl.frac_digits ||

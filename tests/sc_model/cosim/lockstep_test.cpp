@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "interp_test_support.h"
 #include "lockstep.h"
@@ -180,11 +181,31 @@ TEST(CosimVcd, WritesTheRequestedWindowOfTheRtl) {
   std::stringstream text;
   text << in.rdbuf();
   const std::string vcd = text.str();
-  EXPECT_NE(vcd.find("$scope module interp_top"), std::string::npos);
-  EXPECT_NE(vcd.find(" step_x_o "), std::string::npos);
-  EXPECT_NE(vcd.find("#39500000000"), std::string::npos);  // clk low before edge 40 (1 ms)
-  EXPECT_NE(vcd.find("#60000000000"), std::string::npos);  // edge 60
-  EXPECT_EQ(vcd.find("#61000000000"), std::string::npos);
+  // The full path of the port, as the system model's VCDs name it (docs/waves.md).
+  std::vector<std::string> scopes;
+  std::set<std::string> step_x_paths;
+  std::istringstream lines(vcd);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string w, kind, name;
+    words >> w;
+    if (w == "$scope") {
+      words >> kind >> name;
+      scopes.push_back(name);
+    } else if (w == "$upscope") {
+      scopes.pop_back();
+    } else if (w == "$var" && line.find(" step_x_o ") != std::string::npos) {
+      std::string path;
+      for (const std::string& sc : scopes) path += sc + ".";
+      step_x_paths.insert(path + "step_x_o");
+    }
+  }
+  EXPECT_EQ(step_x_paths.count("SystemC.interp.interp_top.step_x_o"), 1u);
+  // 1 kHz: edge c at (c + 1) ms, clk low half a period before (docs/waves.md).
+  EXPECT_NE(vcd.find("#40500000000"), std::string::npos);  // clk low before edge 40
+  EXPECT_EQ(vcd.find("#39500000000"), std::string::npos);
+  EXPECT_NE(vcd.find("#61000000000"), std::string::npos);  // edge 60
+  EXPECT_EQ(vcd.find("#62000000000"), std::string::npos);
   for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir()))
     EXPECT_EQ(entry.path().filename().string().rfind(".cosim_window.vcd", 0), std::string::npos)
         << "temporary left behind: " << entry.path();
