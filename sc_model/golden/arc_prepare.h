@@ -1,0 +1,61 @@
+// Arc preparation in the decoder: the C++ twin of rtl/arc_prepare.sv (same registers, same
+// clock-by-clock outputs).
+// Idea: before an arc block is handed to the block buffer, the decoder (a) checks it: zero
+// radius, quadrant and register width at once from the geometry, the radius (end within
+// 1 BLU of the circle) with a bit-serial squarer in 2W + 3 clocks; and (b) runs the
+// block's circle DDA once without pulses (a dry run, one iteration per clock) to learn
+// its iteration count N, summing F once per iteration. The block then carries S = F * N,
+// and the feed generator plays its N iterations in M / F clocks, like the 2^k iterations
+// of a line (docs/circle-dda.md section 4). Both run in parallel; a failed radius check
+// stops the dry run.
+#pragma once
+#include <cstdint>
+
+#include "arc_geometry.h"
+#include "circle_dda.h"
+#include "interp_ports.h"
+
+namespace ncinterp {
+
+class ArcPrepare {
+ public:
+  ArcPrepare(unsigned inc_width, unsigned feed_width);
+
+  void reset();
+
+  // What the decoder sees in a clock with run_i = 1: done (the result is final; the
+  // decoder leaves its arc state at this edge) and the error code (kNone = good arc).
+  struct Result {
+    bool done = false;
+    TapeError error = TapeError::kNone;
+  };
+
+  // One clock edge with run_i = 1 and the held block's words and F: returns the outputs
+  // of this clock (from the registers before the edge), then updates the registers.
+  Result edge(const ArcWords& w, uint64_t feed);
+  // One clock edge with run_i = 0.
+  void idle() { running_ = false; }
+
+  // S = F * N of the prepared block (valid after a done without error).
+  uint64_t step() const { return step_; }
+  // Clocks of the radius check after the start edge (2W + 3).
+  unsigned check_steps() const { return check_steps_; }
+
+ private:
+  void check_step(const ArcGeometry& g);  // one step of the bit-serial radius check
+
+  unsigned inc_width_;
+  unsigned check_steps_;
+  uint64_t step_mask_;
+
+  bool running_ = false;    // a prepared arc is in progress (after its start edge)
+  CircleDda dry_;           // the dry-run DDA
+  uint64_t step_ = 0;       // F added once per dry-run iteration: F * N
+  // Bit-serial radius check: count_ steps done; a_ = x0^2 + y0^2; sq_ = x1^2 + y1^2,
+  // then |E|^2 with E = B - A - 1; e_ = |E| (W + 2 bits); far_ = |E| >= 2^(W+2).
+  unsigned count_ = 0;
+  uint64_t a_ = 0, sq_ = 0, e_ = 0;
+  bool far_ = false;
+};
+
+}  // namespace ncinterp
