@@ -91,10 +91,13 @@ int run(const CheckArgs& a) {
   ctx.tape_file = a.tape;
   ctx.contour_file = a.contour;
   ctx.setup = setup;
-  // Every output is built in memory first, then written atomically.
-  if (!a.report.empty())
-    write_file_atomically(a.report, checker::check_report_json(outcome, ctx).dump(2) + "\n");
-  if (!a.svg.empty()) write_file_atomically(a.svg, checker::check_svg(outcome, ctx));
+  // Every output is built in memory first, then each written atomically: a failure
+  // building one leaves no file at all.
+  const std::string report =
+      a.report.empty() ? "" : checker::check_report_json(outcome, ctx).dump(2) + "\n";
+  const std::string svg = a.svg.empty() ? "" : checker::check_svg(outcome, ctx);
+  if (!a.report.empty()) write_file_atomically(a.report, report);
+  if (!a.svg.empty()) write_file_atomically(a.svg, svg);
   std::cout << checker::check_summary_text(outcome, ctx);
   return outcome.passed() ? 0 : 2;
 }
