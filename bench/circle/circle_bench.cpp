@@ -1,0 +1,191 @@
+// circle_bench: the measurements of docs/circle-dda.md, printed as Markdown tables under
+// the command that produced them.
+// Sections:
+//   scheme      forward Euler vs immediate update, free-running, 1 and 10 turns
+//   quadrants   the golden circle DDA on full quadrant blocks, worst radial error by radius
+//   random      random quadrant arcs: radial error bound, iteration count
+//   exhaustive  every good arc of small machines (W = 5, 6)
+// Idea: all numbers come from the same golden classes the interpolator uses
+// (sc_model/golden/circle_dda.h, arc_geometry.h), except the scheme study, which needs a
+// free-running circle (bench/circle/scheme_study.h).
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "arc_geometry.h"
+#include "circle_test_support.h"
+#include "scheme_study.h"
+
+namespace ncinterp::bench {
+namespace {
+
+using test::QuadrantArc;
+
+void scheme_section() {
+  std::printf("\n### Update scheme, free-running circle (no counters), counter-clockwise\n\n");
+  std::printf("| radius | scheme | max radial error, turn 1 | turn 10 | radius after 10 turns - R |"
+              " iterations per turn |\n|---:|---|---:|---:|---:|---:|\n");
+  for (int64_t r : {10, 100, 1000, 50000, 65535}) {
+    for (Scheme s : {Scheme::kSimultaneous, Scheme::kXFirst, Scheme::kAlternating}) {
+      TurnStats turns[10];
+      run_free_turns(s, r, 10, turns);
+      const double end_r = std::hypot(double(turns[9].end_x), double(turns[9].end_y));
+      std::printf("| %lld | %s | %.3f | %.3f | %+.3f | %llu |\n", static_cast<long long>(r),
+                  scheme_name(s), turns[0].max_radial_error, turns[9].max_radial_error,
+                  end_r - double(r), static_cast<unsigned long long>(turns[0].iterations));
+    }
+  }
+}
+
+struct Worst {
+  double error = -1;
+  QuadrantArc arc;
+  void offer(double e, const QuadrantArc& a) {
+    if (e > error) error = e, arc = a;
+  }
+};
+
+void quadrants_section() {
+  std::printf("\n### Full quadrant blocks (golden circle DDA), both directions, all quadrants\n\n");
+  const int64_t classes[] = {1, 4, 16, 256, 4096, 32768, 65536};
+  std::printf("| radius | radii run | worst radial error | at | max N / 2^k |\n"
+              "|---|---:|---:|---|---:|\n");
+  std::mt19937_64 rng(7);
+  for (int c = 0; c + 1 < 7; ++c) {
+    const int64_t lo = classes[c], hi = classes[c + 1] - 1;
+    std::vector<int64_t> radii;
+    if (hi - lo < 4096) {
+      for (int64_t r = lo; r <= hi; ++r) radii.push_back(r);
+    } else {
+      for (int i = 0; i < 400; ++i) radii.push_back(lo + int64_t(rng() % uint64_t(hi - lo + 1)));
+      radii.push_back(hi);
+    }
+    Worst worst;
+    double max_n = 0;
+    for (int64_t r : radii)
+      for (int q = 0; q < 4; ++q)
+        for (bool ccw : {false, true}) {
+          const QuadrantArc a = test::full_quadrant(r, q, ccw);
+          const test::ArcRunStats s = test::run_arc(a, 16, 1u << 20);
+          worst.offer(s.max_radial_error, a);
+          max_n = std::max(max_n, double(s.iterations) / double(uint64_t{1} << s.k));
+        }
+    std::printf("| %lld .. %lld | %zu | %.3f | %s | %.3f |\n", static_cast<long long>(lo),
+                static_cast<long long>(hi), radii.size(), worst.error, worst.arc.describe().c_str(),
+                max_n);
+  }
+}
+
+void random_section(int count, uint64_t seed) {
+  std::printf("\n### %d random quadrant arcs, W = 16 (radius log-uniform 1 .. 65535)\n\n", count);
+  std::mt19937_64 rng(seed);
+  Worst abs_err, excess, excess_off;
+  double max_n = 0, max_off = 0;
+  uint64_t off_arcs = 0;
+  for (int t = 0; t < count; ++t) {
+    QuadrantArc a = test::random_arc(rng, 65535);
+    // Every other arc: move the end by up to 1 BLU per coordinate while it stays good, to
+    // reach ends a whole BLU off the circle.
+    const bool perturbed = t % 2 == 1;
+    if (perturbed) {
+      QuadrantArc b = a;
+      b.x1 += int64_t(rng() % 3) - 1;
+      b.y1 += int64_t(rng() % 3) - 1;
+      if (check_arc(b.words(), 16) == TapeError::kNone) a = b;
+    }
+    const test::ArcRunStats s = test::run_arc(a, 16, 1u << 20);
+    const double off = std::fabs(a.end_radius() - a.start_radius());
+    abs_err.offer(s.max_radial_error, a);
+    (perturbed ? excess_off : excess).offer(s.max_radial_error - off, a);
+    max_off = std::max(max_off, off);
+    off_arcs += perturbed;
+    max_n = std::max(max_n, double(s.iterations) / double(uint64_t{1} << s.k));
+  }
+  std::printf("| measure | value | worst arc |\n|---|---:|---|\n");
+  std::printf("| max radial error (vs start radius R0) | %.3f | %s |\n", abs_err.error,
+              abs_err.arc.describe().c_str());
+  std::printf("| max (error - \\|R1 - R0\\|), ends rounded from the circle | %.3f | %s |\n",
+              excess.error, excess.arc.describe().c_str());
+  std::printf("| max (error - \\|R1 - R0\\|), ends moved up to 1 BLU (%llu arcs) | %.3f | %s |\n",
+              static_cast<unsigned long long>(off_arcs), excess_off.error,
+              excess_off.arc.describe().c_str());
+  std::printf("| largest \\|R1 - R0\\| | %.3f | |\n", max_off);
+  std::printf("| max N / 2^k | %.3f | |\n", max_n);
+}
+
+// Every good arc with start and end magnitudes < 2^w, both directions.
+void exhaustive_width(unsigned w) {
+  const int64_t lim = (int64_t{1} << w) - 1;
+  Worst excess, abs_err;
+  double max_n = 0;
+  uint64_t arcs = 0, failures = 0;
+  for (int64_t x0 = -lim; x0 <= lim; ++x0)
+    for (int64_t y0 = -lim; y0 <= lim; ++y0) {
+      const double r0 = std::hypot(double(x0), double(y0));
+      for (int64_t x1 = -lim; x1 <= lim; ++x1) {
+        // y1^2 within [(r0 - 1)^2 - x1^2, (r0 + 1)^2 - x1^2], widened by one; check_arc decides.
+        const double lo2 = std::max(0.0, (r0 - 1) * (r0 - 1) - double(x1 * x1));
+        const double hi2 = (r0 + 1) * (r0 + 1) - double(x1 * x1);
+        if (hi2 < 0) continue;
+        const int64_t ylo = std::max<int64_t>(0, int64_t(std::sqrt(lo2)) - 1);
+        const int64_t yhi = std::min<int64_t>(lim, int64_t(std::sqrt(hi2)) + 1);
+        for (int64_t ym = ylo; ym <= yhi; ++ym)
+          for (int64_t y1 : {ym, -ym}) {
+            if (y1 == 0 && ym != y1) continue;
+            for (bool ccw : {false, true}) {
+              QuadrantArc a;
+              a.x0 = x0, a.y0 = y0, a.x1 = x1, a.y1 = y1, a.ccw = ccw;
+              if (check_arc(a.words(), w) != TapeError::kNone) continue;
+              ++arcs;
+              const test::ArcRunStats s = test::run_arc(a, w, uint64_t{1} << (w + 3));
+              if (!s.finished || s.x != x1 || s.y != y1) ++failures;
+              abs_err.offer(s.max_radial_error, a);
+              excess.offer(s.max_radial_error - std::fabs(a.end_radius() - a.start_radius()), a);
+              max_n = std::max(max_n, double(s.iterations) / double(uint64_t{1} << s.k));
+            }
+          }
+      }
+    }
+  std::printf("| %u | %llu | %llu | %.3f | %.3f | %s | %.3f |\n", w,
+              static_cast<unsigned long long>(arcs), static_cast<unsigned long long>(failures),
+              abs_err.error, excess.error, excess.arc.describe().c_str(), max_n);
+}
+
+void exhaustive_section(unsigned max_width) {
+  std::printf("\n### Every good arc of a W-bit machine, both directions\n\n");
+  std::printf("| W | good arcs | wrong end or unfinished | max radial error | max (error - "
+              "\\|R1 - R0\\|) | at | max N / 2^k |\n|---:|---:|---:|---:|---:|---|---:|\n");
+  for (unsigned w = 2; w <= max_width; ++w) exhaustive_width(w);
+}
+
+}  // namespace
+}  // namespace ncinterp::bench
+
+int main(int argc, char** argv) {
+  CLI::App app{"circle_bench: circle DDA measurements for docs/circle-dda.md"};
+  std::string section = "all";
+  int count = 100000;
+  uint64_t seed = 1;
+  unsigned max_width = 6;
+  app.add_option("--section", section, "scheme|quadrants|random|exhaustive|all")
+      ->check(CLI::IsMember({"scheme", "quadrants", "random", "exhaustive", "all"}));
+  app.add_option("--arcs", count, "random arcs");
+  app.add_option("--seed", seed, "random seed");
+  app.add_option("--max-width", max_width, "largest W of the exhaustive section")
+      ->check(CLI::Range(2, 8));
+  CLI11_PARSE(app, argc, argv);
+
+  std::string command;
+  for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
+  std::printf("Command: `%s`\n", command.c_str());
+  using namespace ncinterp::bench;
+  if (section == "scheme" || section == "all") scheme_section();
+  if (section == "quadrants" || section == "all") quadrants_section();
+  if (section == "random" || section == "all") random_section(count, seed);
+  if (section == "exhaustive" || section == "all") exhaustive_section(max_width);
+  return 0;
+}
