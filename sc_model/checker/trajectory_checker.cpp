@@ -155,7 +155,13 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
                    " while the block moves " + axis_name(a) + " by " + std::to_string(d[a]));
     }
     if (pulsed) on_pulse(cycle, step, dir);
-    if (options_.schedule && !b.is_arc()) check_schedule(cycle, pulsed);
+    if (options_.schedule && !b.is_arc()) {
+      check_schedule(cycle, pulsed);
+      if (o.feed_saturated != schedule_.saturated())
+        report(Rule::kDuration, cycle,
+               std::string("feed_saturated_o = ") + (o.feed_saturated ? "1" : "0") +
+                   ", documented " + (schedule_.saturated() ? "1 (F << k >= M)" : "0 (F << k < M)"));
+    }
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }

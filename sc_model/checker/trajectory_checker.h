@@ -14,7 +14,8 @@
 //             or late pulse is reported at the clock where it happens;
 //   bound     each pulse position is within the interpolator's bound of the block's path;
 //   endpoint  at the block's end each axis has emitted exactly its increment;
-//   duration  (line blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated);
+//   duration  (line blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
+//             and feed_saturated_o says whether F << k >= M;
 //   sequence  blocks load in tape order, block_n_o showing each block's N;
 //   complete  the run reaches the end of program with every block played.
 // Each rule reports its first failure per block with the block, the clock and the position.

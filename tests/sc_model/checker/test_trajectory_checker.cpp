@@ -113,6 +113,7 @@ class SyntheticRun : public ::testing::Test {
   static InterpOutputs busy(int64_t x, bool step = false) {
     InterpOutputs o;
     o.busy = true;
+    o.feed_saturated = true;  // F << k >= M
     o.block_n = 7;
     o.dir_x = o.dir_y = true;
     o.pos_x = x;
@@ -169,6 +170,14 @@ TEST_F(SyntheticRun, WrongDirectionOutput) {
   play({busy(0), busy(1, true), flipped});
   EXPECT_EQ(first_rule(), Rule::kDirection);
   EXPECT_EQ(first_cycle(), 3u);
+}
+
+TEST_F(SyntheticRun, SaturationFlagMustMatchTheDocumentedRule) {
+  InterpOutputs o = busy(1, true);
+  o.feed_saturated = false;
+  play({busy(0), o});
+  EXPECT_EQ(first_rule(), Rule::kDuration);
+  EXPECT_EQ(first_cycle(), 2u);
 }
 
 TEST_F(SyntheticRun, PulseWhileIdle) {
