@@ -84,6 +84,8 @@ void random_section(int count, uint64_t seed) {
   std::printf("\n### %d random quadrant arcs, W = 16 (radius log-uniform 1 .. 65535)\n\n", count);
   std::mt19937_64 rng(seed);
   Worst abs_err, excess, excess_off;
+  const double classes[] = {1, 16, 256, 4096, 65536};
+  Worst by_class[4];  // max (error - |R1 - R0|) by start radius
   double max_n = 0, max_off = 0;
   uint64_t off_arcs = 0;
   for (int t = 0; t < count; ++t) {
@@ -102,6 +104,9 @@ void random_section(int count, uint64_t seed) {
     abs_err.offer(s.max_radial_error, a);
     (perturbed ? excess_off : excess).offer(s.max_radial_error - off, a);
     max_off = std::max(max_off, off);
+    for (int c = 0; c < 4; ++c)
+      if (a.start_radius() >= classes[c] && a.start_radius() < classes[c + 1])
+        by_class[c].offer(s.max_radial_error - off, a);
     off_arcs += perturbed;
     max_n = std::max(max_n, double(s.iterations) / double(uint64_t{1} << s.k));
   }
@@ -115,6 +120,10 @@ void random_section(int count, uint64_t seed) {
               excess_off.arc.describe().c_str());
   std::printf("| largest \\|R1 - R0\\| | %.3f | |\n", max_off);
   std::printf("| max N / 2^k | %.3f | |\n", max_n);
+  std::printf("\n| start radius R0 | max (error - \\|R1 - R0\\|) | at |\n|---|---:|---|\n");
+  for (int c = 0; c < 4; ++c)
+    std::printf("| %g .. %g | %.3f | %s |\n", classes[c], classes[c + 1], by_class[c].error,
+                by_class[c].arc.describe().c_str());
 }
 
 // Every good arc with start and end magnitudes < 2^w, both directions.
