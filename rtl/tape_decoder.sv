@@ -398,7 +398,7 @@ module tape_decoder #(
               end
             end
           end
-          default: ;  // StHold, StError: not ready, no frame is taken
+          default: ;  // StHold, StError: no frame is processed
         endcase
       end
     end else if (state_q == StHold) begin

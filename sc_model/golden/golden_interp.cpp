@@ -53,6 +53,7 @@ void GoldenInterp::reset() {
 
 void GoldenInterp::load_block() {
   const DecodedBlock& b = next_;
+  // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
   const unsigned k = bit_length(b.dx | b.dy);
   kpow_ = 1u << k;
   rem_ = kpow_;
