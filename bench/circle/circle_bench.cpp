@@ -83,7 +83,7 @@ void quadrants_section() {
 void random_section(int count, uint64_t seed) {
   std::printf("\n### %d random quadrant arcs, W = 16 (radius log-uniform 1 .. 65535)\n\n", count);
   std::mt19937_64 rng(seed);
-  Worst abs_err, excess, excess_off;
+  Worst abs_err, excess, excess_off, spiral, spiral_excess;
   const double classes[] = {1, 16, 256, 4096, 65536};
   Worst by_class[4];  // max (error - |R1 - R0|) by start radius
   double max_n = 0, max_off = 0;
@@ -102,6 +102,8 @@ void random_section(int count, uint64_t seed) {
     const test::ArcRunStats s = test::run_arc(a, 16, 1u << 20);
     const double off = std::fabs(a.end_radius() - a.start_radius());
     abs_err.offer(s.max_radial_error, a);
+    spiral.offer(s.max_spiral_error, a);
+    spiral_excess.offer(s.max_spiral_error - off, a);
     (perturbed ? excess_off : excess).offer(s.max_radial_error - off, a);
     max_off = std::max(max_off, off);
     for (int c = 0; c < 4; ++c)
@@ -118,6 +120,10 @@ void random_section(int count, uint64_t seed) {
   std::printf("| max (error - \\|R1 - R0\\|), ends moved up to 1 BLU (%llu arcs) | %.3f | %s |\n",
               static_cast<unsigned long long>(off_arcs), excess_off.error,
               excess_off.arc.describe().c_str());
+  std::printf("| max error vs r(phi) linear from R0 to R1 (checker's measure) | %.3f | %s |\n",
+              spiral.error, spiral.arc.describe().c_str());
+  std::printf("| max (error vs r(phi) - \\|R1 - R0\\|) | %.3f | %s |\n", spiral_excess.error,
+              spiral_excess.arc.describe().c_str());
   std::printf("| largest \\|R1 - R0\\| | %.3f | |\n", max_off);
   std::printf("| max N / 2^k | %.3f | |\n", max_n);
   std::printf("\n| start radius R0 | max (error - \\|R1 - R0\\|) | at |\n|---|---:|---|\n");
@@ -129,7 +135,7 @@ void random_section(int count, uint64_t seed) {
 // Every good arc with start and end magnitudes < 2^w, both directions.
 void exhaustive_width(unsigned w) {
   const int64_t lim = (int64_t{1} << w) - 1;
-  Worst excess, abs_err;
+  Worst excess, abs_err, spiral_excess;
   double max_n = 0;
   uint64_t arcs = 0, failures = 0;
   for (int64_t x0 = -lim; x0 <= lim; ++x0)
@@ -153,21 +159,25 @@ void exhaustive_width(unsigned w) {
               const test::ArcRunStats s = test::run_arc(a, w, uint64_t{1} << (w + 3));
               if (!s.finished || s.x != x1 || s.y != y1) ++failures;
               abs_err.offer(s.max_radial_error, a);
-              excess.offer(s.max_radial_error - std::fabs(a.end_radius() - a.start_radius()), a);
+              const double off = std::fabs(a.end_radius() - a.start_radius());
+              excess.offer(s.max_radial_error - off, a);
+              spiral_excess.offer(s.max_spiral_error - off, a);
               max_n = std::max(max_n, double(s.iterations) / double(uint64_t{1} << s.k));
             }
           }
       }
     }
-  std::printf("| %u | %llu | %llu | %.3f | %.3f | %s | %.3f |\n", w,
+  std::printf("| %u | %llu | %llu | %.3f | %.3f | %s | %.3f | %.3f |\n", w,
               static_cast<unsigned long long>(arcs), static_cast<unsigned long long>(failures),
-              abs_err.error, excess.error, excess.arc.describe().c_str(), max_n);
+              abs_err.error, excess.error, excess.arc.describe().c_str(), spiral_excess.error,
+              max_n);
 }
 
 void exhaustive_section(unsigned max_width) {
   std::printf("\n### Every good arc of a W-bit machine, both directions\n\n");
-  std::printf("| W | good arcs | wrong end or unfinished | max radial error | max (error - "
-              "\\|R1 - R0\\|) | at | max N / 2^k |\n|---:|---:|---:|---:|---:|---|---:|\n");
+  std::printf("| W | good arcs | wrong end or unfinished | max radial error (vs R0) | max (error - "
+              "\\|R1 - R0\\|) | at | max (error vs r(phi) - \\|R1 - R0\\|) | max N / 2^k |\n"
+              "|---:|---:|---:|---:|---:|---|---:|---:|\n");
   for (unsigned w = 2; w <= max_width; ++w) exhaustive_width(w);
 }
 

@@ -53,6 +53,11 @@ constexpr double kPathBound = 1.0;
     return ::testing::AssertionFailure()
            << a.describe() << ": pulse at (" << s.worst_x << ", " << s.worst_y << ") is "
            << s.max_radial_error << " BLU off the circle (bound " << bound << ")";
+  const double spiral_bound = kDdaBound + std::fabs(a.end_radius() - a.start_radius());
+  if (s.max_spiral_error > spiral_bound)
+    return ::testing::AssertionFailure() << a.describe() << ": " << s.max_spiral_error
+                                         << " BLU off the arc of linearly changing radius (bound "
+                                         << spiral_bound << ")";
   return ::testing::AssertionSuccess();
 }
 

@@ -71,7 +71,11 @@ ArcRunStats run_arc(const QuadrantArc& arc, unsigned inc_width, uint64_t max_ite
   s.k = g.k;
   s.x = arc.x0;
   s.y = arc.y0;
-  const double r0 = arc.start_radius();
+  const double r0 = arc.start_radius(), r1 = arc.end_radius();
+  // Angle travelled from the start, in the arc's direction, as a fraction of the sweep.
+  const double a0 = std::atan2(double(arc.y0), double(arc.x0));
+  const double sweep = std::fabs(std::remainder(std::atan2(double(arc.y1), double(arc.x1)) - a0,
+                                                2 * M_PI));
   while (!dda.done() && s.iterations < max_iterations) {
     const CircleDda::Steps st = dda.iterate();
     ++s.iterations;
@@ -89,6 +93,11 @@ ArcRunStats run_arc(const QuadrantArc& arc, unsigned inc_width, uint64_t max_ite
         s.worst_x = s.x;
         s.worst_y = s.y;
       }
+      const double phi = std::fabs(
+          std::remainder(std::atan2(double(s.y), double(s.x)) - a0, 2 * M_PI));
+      const double t = sweep > 0 ? std::min(1.0, phi / sweep) : 1.0;
+      const double es = std::fabs(std::hypot(double(s.x), double(s.y)) - (r0 + (r1 - r0) * t));
+      if (es > s.max_spiral_error) s.max_spiral_error = es;
     }
   }
   s.finished = dda.done();

@@ -46,6 +46,9 @@ struct ArcRunStats {
   // and that position.
   double max_radial_error = 0;
   int64_t worst_x = 0, worst_y = 0;
+  // The same against r(phi) going linearly from R0 to the end radius R1 over the sweep
+  // (the trajectory checker's arc measure, docs/verification.md).
+  double max_spiral_error = 0;
 };
 ArcRunStats run_arc(const QuadrantArc& arc, unsigned inc_width, uint64_t max_iterations);
 
