@@ -76,7 +76,9 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
     const ProgrammedBlock& b = blocks_[k];
     BlockResult& r = results_[k];
     r.rapid = reference_ && reference_->is_rapid(b, options_.tol_blu);
-    r.bound = b.is_arc() ? options_.arc_bound_blu : line_bound(b.tape.dx, b.tape.dy);
+    r.bound = b.is_arc() ? options_.arc_bound_blu + std::fabs(norm(to_vec(b.end) - b.centre) -
+                                                             norm(to_vec(b.start) - b.centre))
+                         : line_bound(b.tape.dx, b.tape.dy);
     r.ideal_clocks = b.tape.feed ? static_cast<double>(options_.feed_modulus) /
                                        static_cast<double>(b.tape.feed)
                                  : 0.0;
