@@ -1,0 +1,70 @@
+// The plot series keep what matters: the worst point is inside its zoom with its foot, the
+// staircase inside the zoom is every pulse there (unit steps), no error peak is lost by the
+// binning along the path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "check_plot_data.h"
+#include "checker_test_support.h"
+
+namespace ncinterp::checker {
+namespace {
+
+CheckOutcome inscribed_polygon_check() {
+  firststage::Contour circle;
+  circle.origin = {20.0, 0.0};
+  circle.segments.push_back(firststage::Segment::arc({0, 0}, 20.0, 0.0, 2 * M_PI));
+  circle.element_names = {"circle"};
+  tape::Program p;
+  int64_t px = 20000, py = 0;
+  for (int k = 1; k <= 48; ++k) {
+    const double a = 2 * M_PI * k / 48;
+    const int64_t x = std::llround(20000 * std::cos(a)), y = std::llround(20000 * std::sin(a));
+    tape::Block b;
+    b.n = static_cast<uint32_t>(k);
+    b.dx = x - px, b.dy = y - py, b.feed = 4'000'000;
+    p.blocks.push_back(b);
+    px = x, py = y;
+  }
+  CheckSetup setup;
+  setup.reader_cps = 1e6;
+  setup.tol_mm = 0.1;
+  return run_check(test::frames_of(p), &circle, setup);
+}
+
+TEST(CheckPlotData, WorstPointZoomAndBins) {
+  const CheckOutcome out = inscribed_polygon_check();
+  ASSERT_TRUE(out.passed());
+  const CheckPlotData d = check_plot_data(out, 0.1, 500);
+  ASSERT_TRUE(d.has_worst);
+  EXPECT_TRUE(d.zoom.contains(d.worst));
+  EXPECT_NEAR(std::hypot(d.worst.x - d.worst_foot.x, d.worst.y - d.worst_foot.y), d.worst_error_mm, 1e-6);
+  EXPECT_NEAR(std::hypot(d.worst_foot.x, d.worst_foot.y), 20.0, 1e-6);  // the foot is on the circle
+  // Overview holds the whole circle.
+  EXPECT_LE(d.overview.x0, -20.0);
+  EXPECT_GE(d.overview.x1, 20.0);
+  // The staircase in the zoom: consecutive pulses one step apart per axis.
+  size_t pulses = 0;
+  for (const Polyline& run : d.zoom_pulses) {
+    for (size_t i = 1; i < run.size(); ++i) {
+      EXPECT_LE(std::fabs(run[i].x - run[i - 1].x), 0.001 + 1e-9);
+      EXPECT_LE(std::fabs(run[i].y - run[i - 1].y), 0.001 + 1e-9);
+    }
+    pulses += run.size();
+  }
+  EXPECT_GT(pulses, 50u);
+  EXPECT_FALSE(d.zoom_contour.empty());
+  EXPECT_FALSE(d.zoom_programmed.empty());
+  // Binning keeps the peak.
+  double peak = 0.0;
+  for (const ErrorBin& b : d.error_bins) peak = std::max(peak, b.total_max);
+  EXPECT_NEAR(peak, d.worst_error_mm, 1e-6);
+  // The staircase is longer than the circle, and at most sqrt(2) times its 4-connected
+  // length (4/pi the circle).
+  EXPECT_GT(d.path_length_mm, 2 * M_PI * 20.0);
+  EXPECT_LT(d.path_length_mm, 8 * 20.0 * std::sqrt(2.0));
+}
+
+}  // namespace
+}  // namespace ncinterp::checker
