@@ -1,0 +1,314 @@
+// SVG figures drawn with PLplot's svg driver (see svg_figure.h).
+// Idea: the page is laid out here (a grid of panels, each with room for its labels), and
+// PLplot draws each panel into its own viewport: grid, bands, series, boxes, axes, labels
+// and a legend. PLplot writes to a FILE*; open_memstream turns that into a string. PLplot
+// keeps global state and is not thread-safe, so one figure is drawn at a time.
+#include "svg_figure.h"
+
+#include <plplot/plstream.h>
+#include <stdio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+
+namespace ncinterp::plot {
+namespace {
+
+// cmap0 index 0 is PLplot's background; the palette follows in Colour's order.
+struct Rgb {
+  int r, g, b;
+};
+constexpr Rgb kBackground{255, 255, 255};
+constexpr Rgb kPalette[] = {
+    {0, 0, 0},       // black
+    {200, 30, 30},   // red
+    {30, 80, 200},   // blue
+    {20, 140, 50},   // green
+    {230, 130, 0},   // orange
+    {130, 50, 160},  // purple
+    {140, 80, 30},   // brown
+    {140, 140, 140}, // grey
+    {0, 160, 170},   // cyan
+};
+constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
+constexpr int kGridColour = kPaletteSize + 1;   // light grey grid lines
+constexpr int kBandBase = kPaletteSize + 2;     // translucent copies of the palette
+
+int colour_index(Colour c) { return 1 + static_cast<int>(c); }
+int band_index(Colour c) { return kBandBase + static_cast<int>(c); }
+
+// Markers are drawn as text glyphs (plstring), which the svg driver writes as <text>.
+const char* marker_glyph(Marker m) {
+  switch (m) {
+    case Marker::kDot: return "•";
+    case Marker::kCross: return "×";
+    case Marker::kCircle: return "○";
+    case Marker::kSquare: return "□";
+    case Marker::kNone: break;
+  }
+  return "";
+}
+
+double to_axis(double v, Scale s) { return s == Scale::kLog10 ? std::log10(v) : v; }
+bool on_axis(double v, Scale s) { return std::isfinite(v) && (s == Scale::kLinear || v > 0.0); }
+
+struct Extent {
+  double low = std::numeric_limits<double>::infinity();
+  double high = -std::numeric_limits<double>::infinity();
+  void add(double v) {
+    low = std::min(low, v);
+    high = std::max(high, v);
+  }
+  bool empty() const { return !(low <= high); }
+};
+
+// The axis range in axis units (log10 for log axes): the given range, else the data's
+// extent with a 4% margin; a zero-width extent is widened so PLplot accepts it.
+Range axis_range(const std::optional<Range>& given, const Extent& data, Scale s,
+                 const char* which) {
+  Range r;
+  if (given) {
+    if (s == Scale::kLog10 && (given->low <= 0.0 || given->high <= 0.0))
+      throw std::invalid_argument(std::string("plot: log ") + which + " range must be positive");
+    r = {to_axis(given->low, s), to_axis(given->high, s)};
+  } else if (data.empty()) {
+    r = {0.0, 1.0};
+  } else {
+    const double margin = 0.04 * (data.high - data.low);
+    r = {data.low - margin, data.high + margin};
+  }
+  if (!(r.high > r.low)) {
+    const double pad = std::max(1e-9, std::abs(r.low) * 0.05);
+    r = {r.low - pad, r.low + pad};
+  }
+  return r;
+}
+
+// Consecutive runs of points that can be drawn on the panel's axes, in axis units.
+std::vector<std::pair<std::vector<PLFLT>, std::vector<PLFLT>>> drawable_runs(
+    const Series& s, Scale xs, Scale ys) {
+  std::vector<std::pair<std::vector<PLFLT>, std::vector<PLFLT>>> runs(1);
+  for (size_t i = 0; i < s.x.size(); ++i) {
+    if (on_axis(s.x[i], xs) && on_axis(s.y[i], ys)) {
+      runs.back().first.push_back(to_axis(s.x[i], xs));
+      runs.back().second.push_back(to_axis(s.y[i], ys));
+    } else if (!runs.back().first.empty()) {
+      runs.emplace_back();
+    }
+  }
+  if (runs.back().first.empty()) runs.pop_back();
+  return runs;
+}
+
+void check_figure(const Figure& f) {
+  if (f.columns < 1 || f.rows < 1) throw std::invalid_argument("plot: the grid needs >= 1 column and row");
+  if (f.panels.size() > static_cast<size_t>(f.columns * f.rows))
+    throw std::invalid_argument("plot: more panels than grid cells");
+  if (f.width_px < 100 || f.height_px < 100) throw std::invalid_argument("plot: page too small");
+  for (const Panel& p : f.panels)
+    for (const Series& s : p.series)
+      if (s.x.size() != s.y.size())
+        throw std::invalid_argument("plot: series '" + s.label + "' has x and y of different lengths");
+}
+
+// PLplot reports recoverable problems through plabort; keep the first one for an exception.
+std::string g_plplot_problem;
+void record_plplot_problem(const char* message) {
+  if (g_plplot_problem.empty()) g_plplot_problem = message ? message : "unknown";
+}
+
+class PanelPainter {
+ public:
+  PanelPainter(plstream& pls, const Figure& fig) : pls_(pls), fig_(fig) {}
+
+  // Draws panel `p` into grid cell `cell` (row-major).
+  void draw(const Panel& p, int cell) {
+    const int col = cell % fig_.columns, row = cell / fig_.columns;
+    const double top_reserve = fig_.title.empty() ? 0.0 : 0.05;
+    const double cw = 1.0 / fig_.columns, ch = (1.0 - top_reserve) / fig_.rows;
+    // Room for tick labels and axis titles: absolute sizes in page fractions.
+    const double left = 95.0 / fig_.width_px, right = 20.0 / fig_.width_px;
+    const double bottom = 55.0 / fig_.height_px, top = 35.0 / fig_.height_px;
+    double x0 = col * cw + left, x1 = (col + 1) * cw - right;
+    double y1 = 1.0 - top_reserve - row * ch - top, y0 = 1.0 - top_reserve - (row + 1) * ch + bottom;
+
+    Extent ex, ey;
+    for (const Series& s : p.series)
+      for (size_t i = 0; i < s.x.size(); ++i)
+        if (on_axis(s.x[i], p.x_scale) && on_axis(s.y[i], p.y_scale)) {
+          ex.add(to_axis(s.x[i], p.x_scale));
+          ey.add(to_axis(s.y[i], p.y_scale));
+        }
+    for (const Band& b : p.bands)
+      for (double v : {b.y_low, b.y_high})
+        if (on_axis(v, p.y_scale)) ey.add(to_axis(v, p.y_scale));
+    Range xr = axis_range(p.x_range, ex, p.x_scale, "x");
+    Range yr = axis_range(p.y_range, ey, p.y_scale, "y");
+
+    if (p.equal_aspect) {
+      // Shrink the viewport (not the data range) so one unit has the same length in x and
+      // y; centre it in its cell.
+      const double w_px = (x1 - x0) * fig_.width_px, h_px = (y1 - y0) * fig_.height_px;
+      const double sx = w_px / (xr.high - xr.low), sy = h_px / (yr.high - yr.low);
+      if (sx > sy) {
+        const double w = (xr.high - xr.low) * sy / fig_.width_px, mid = 0.5 * (x0 + x1);
+        x0 = mid - w / 2, x1 = mid + w / 2;
+      } else {
+        const double h = (yr.high - yr.low) * sx / fig_.height_px, mid = 0.5 * (y0 + y1);
+        y0 = mid - h / 2, y1 = mid + h / 2;
+      }
+    }
+    pls_.vpor(x0, x1, y0, y1);
+    pls_.wind(xr.low, xr.high, yr.low, yr.high);
+
+    const std::string xopt = p.x_scale == Scale::kLog10 ? "l" : "";
+    const std::string yopt = p.y_scale == Scale::kLog10 ? "l" : "";
+    pls_.col0(kGridColour);
+    pls_.width(0.5);
+    pls_.box(("g" + xopt).c_str(), 0.0, 0, ("g" + yopt).c_str(), 0.0, 0);
+
+    for (const Band& b : p.bands) {
+      if (!on_axis(b.y_low, p.y_scale) || !on_axis(b.y_high, p.y_scale)) continue;
+      const PLFLT bx[4] = {xr.low, xr.high, xr.high, xr.low};
+      const double lo = to_axis(b.y_low, p.y_scale), hi = to_axis(b.y_high, p.y_scale);
+      const PLFLT by[4] = {lo, lo, hi, hi};
+      pls_.col0(band_index(b.colour));
+      pls_.fill(4, bx, by);
+    }
+    for (const Series& s : p.series) draw_series(s, p);
+    for (const Box& b : p.boxes) {
+      const PLFLT bx[5] = {b.x_low, b.x_high, b.x_high, b.x_low, b.x_low};
+      const PLFLT by[5] = {b.y_low, b.y_low, b.y_high, b.y_high, b.y_low};
+      pls_.col0(colour_index(b.colour));
+      pls_.width(1.5);
+      pls_.lsty(2);
+      pls_.line(5, bx, by);
+      pls_.lsty(1);
+    }
+
+    pls_.col0(colour_index(Colour::kBlack));
+    pls_.width(1.0);
+    pls_.box(("bcnst" + xopt).c_str(), 0.0, 0, ("bcnstv" + yopt).c_str(), 0.0, 0);
+    pls_.lab(p.x_label.c_str(), p.y_label.c_str(), p.title.c_str());
+    if (p.legend) draw_legend(p);
+  }
+
+ private:
+  void draw_series(const Series& s, const Panel& p) {
+    pls_.col0(colour_index(s.colour));
+    pls_.width(s.width);
+    pls_.lsty(s.dashed ? 2 : 1);
+    for (auto& [x, y] : drawable_runs(s, p.x_scale, p.y_scale)) {
+      if (s.line && x.size() > 1) pls_.line(static_cast<PLINT>(x.size()), x.data(), y.data());
+      if (s.marker != Marker::kNone)
+        pls_.string(static_cast<PLINT>(x.size()), x.data(), y.data(), marker_glyph(s.marker));
+    }
+    pls_.lsty(1);
+  }
+
+  void draw_legend(const Panel& p) {
+    std::vector<PLINT> opt, text_colour, box_colour, box_pattern, line_colour, line_style,
+        symbol_colour, symbol_number;
+    std::vector<PLFLT> box_scale, box_width, line_width, symbol_scale;
+    std::vector<const char*> text, symbol;
+    auto add = [&](const std::string& label, PLINT o) {
+      opt.push_back(o);
+      text.push_back(label.c_str());
+      text_colour.push_back(colour_index(Colour::kBlack));
+    };
+    for (const Band& b : p.bands) {
+      if (b.label.empty()) continue;
+      add(b.label, PL_LEGEND_COLOR_BOX);
+      box_colour.push_back(band_index(b.colour));
+      box_pattern.push_back(0);
+      box_scale.push_back(0.8);
+      box_width.push_back(1.0);
+      line_colour.push_back(0), line_style.push_back(1), line_width.push_back(1.0);
+      symbol_colour.push_back(0), symbol_scale.push_back(1.0), symbol_number.push_back(0);
+      symbol.push_back("");
+    }
+    for (const Series& s : p.series) {
+      if (s.label.empty()) continue;
+      PLINT o = 0;
+      if (s.line) o |= PL_LEGEND_LINE;
+      if (s.marker != Marker::kNone) o |= PL_LEGEND_SYMBOL;
+      add(s.label, o ? o : PL_LEGEND_NONE);
+      box_colour.push_back(0), box_pattern.push_back(0), box_scale.push_back(0.0),
+          box_width.push_back(0.0);
+      line_colour.push_back(colour_index(s.colour));
+      line_style.push_back(s.dashed ? 2 : 1);
+      line_width.push_back(s.width);
+      symbol_colour.push_back(colour_index(s.colour));
+      symbol_scale.push_back(1.0);
+      symbol_number.push_back(s.marker == Marker::kNone ? 0 : 1);
+      symbol.push_back(marker_glyph(s.marker));
+    }
+    if (opt.empty()) return;
+    PLFLT width = 0, height = 0;
+    pls_.width(1.0);
+    pls_.legend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
+                PL_POSITION_TOP | PL_POSITION_RIGHT | PL_POSITION_INSIDE, 0.01, 0.01, 0.06,
+                0, colour_index(Colour::kGrey), 1, 0, 0, static_cast<PLINT>(opt.size()),
+                opt.data(), 0.8, 0.7, 1.8, 0.0, text_colour.data(), text.data(),
+                box_colour.data(), box_pattern.data(), box_scale.data(), box_width.data(),
+                line_colour.data(), line_style.data(), line_width.data(),
+                symbol_colour.data(), symbol_scale.data(), symbol_number.data(),
+                symbol.data());
+  }
+
+  plstream& pls_;
+  const Figure& fig_;
+};
+
+std::mutex g_plplot_mutex;
+
+}  // namespace
+
+std::string render_svg(const Figure& figure) {
+  check_figure(figure);
+  std::lock_guard<std::mutex> lock(g_plplot_mutex);
+
+  char* buffer = nullptr;
+  size_t size = 0;
+  FILE* out = open_memstream(&buffer, &size);
+  if (!out) throw std::runtime_error("plot: cannot open a memory stream");
+  g_plplot_problem.clear();
+  {
+    plstream pls;
+    plsabort(&record_plplot_problem);
+    pls.sdev("svg");
+    pls.sfile(out);
+    pls.spage(0, 0, figure.width_px, figure.height_px, 0, 0);
+    pls.scmap0n(kBandBase + kPaletteSize);
+    pls.scolbg(kBackground.r, kBackground.g, kBackground.b);
+    for (int i = 0; i < kPaletteSize; ++i) {
+      pls.scol0a(1 + i, kPalette[i].r, kPalette[i].g, kPalette[i].b, 1.0);
+      pls.scol0a(kBandBase + i, kPalette[i].r, kPalette[i].g, kPalette[i].b, 0.18);
+    }
+    pls.scol0a(kGridColour, 225, 225, 225, 1.0);
+    pls.init();
+    pls.adv(0);
+    pls.schr(0, 0.8);
+    if (!figure.title.empty()) {
+      pls.vpor(0.0, 1.0, 0.95, 1.0);
+      pls.wind(0.0, 1.0, 0.0, 1.0);
+      pls.col0(colour_index(Colour::kBlack));
+      pls.schr(0, 1.0);
+      pls.ptex(0.5, 0.4, 1.0, 0.0, 0.5, figure.title.c_str());
+      pls.schr(0, 0.8);
+    }
+    PanelPainter painter(pls, figure);
+    for (size_t i = 0; i < figure.panels.size(); ++i)
+      painter.draw(figure.panels[i], static_cast<int>(i));
+  }  // ~plstream ends the page and flushes the document into `out`
+  std::string svg(buffer ? buffer : "", size);
+  std::free(buffer);
+  if (!g_plplot_problem.empty()) throw std::runtime_error("plot: PLplot: " + g_plplot_problem);
+  return svg;
+}
+
+}  // namespace ncinterp::plot
