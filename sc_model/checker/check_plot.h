@@ -8,9 +8,7 @@
 
 namespace ncinterp::checker {
 
-// True when this build has the plot library.
-bool svg_available();
-// The SVG document. Throws std::runtime_error when the build has no plot library.
+// The SVG document. Needs the outcome's pulses (CheckSetup::keep_pulses).
 std::string check_svg(const CheckOutcome& outcome, const ReportContext& context);
 
 }  // namespace ncinterp::checker

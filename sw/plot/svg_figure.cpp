@@ -38,6 +38,13 @@ constexpr int kPaletteSize = sizeof(kPalette) / sizeof(kPalette[0]);
 constexpr int kGridColour = kPaletteSize + 1;   // light grey grid lines
 constexpr int kBandBase = kPaletteSize + 2;     // translucent copies of the palette
 
+// Layout, in px of the page: the page title's strip, the room under a panel for its tick
+// labels and axis title, and one legend row.
+constexpr double kTitleHeightPx = 50.0;
+constexpr double kAxisBelowPx = 75.0;
+constexpr double kLegendRowPx = 32.0;
+constexpr double kTextScale = 0.75;  // of PLplot's default character height
+
 int colour_index(Colour c) { return 1 + static_cast<int>(c); }
 int band_index(Colour c) { return kBandBase + static_cast<int>(c); }
 
@@ -104,10 +111,27 @@ std::vector<std::pair<std::vector<PLFLT>, std::vector<PLFLT>>> drawable_runs(
   return runs;
 }
 
+// The grid cell (row-major) where each panel starts: panels follow each other along a
+// row; one that does not fit in the rest of its row starts the next row.
+std::vector<int> first_cells(const Figure& f) {
+  std::vector<int> cells;
+  int cell = 0;
+  for (const Panel& p : f.panels) {
+    if (cell % f.columns + p.columns_spanned > f.columns) cell += f.columns - cell % f.columns;
+    cells.push_back(cell);
+    cell += p.columns_spanned;
+  }
+  return cells;
+}
+
 void check_figure(const Figure& f) {
   if (f.columns < 1 || f.rows < 1) throw std::invalid_argument("plot: the grid needs >= 1 column and row");
-  if (f.panels.size() > static_cast<size_t>(f.columns * f.rows))
-    throw std::invalid_argument("plot: more panels than grid cells");
+  for (const Panel& p : f.panels)
+    if (p.columns_spanned < 1 || p.columns_spanned > f.columns)
+      throw std::invalid_argument("plot: a panel spans 1 to " + std::to_string(f.columns) + " columns");
+  const std::vector<int> cells = first_cells(f);
+  if (!cells.empty() && cells.back() + f.panels.back().columns_spanned > f.columns * f.rows)
+    throw std::invalid_argument("plot: the panels do not fit the grid");
   if (f.width_px < 100 || f.height_px < 100) throw std::invalid_argument("plot: page too small");
   for (const Panel& p : f.panels)
     for (const Series& s : p.series)
@@ -125,15 +149,18 @@ class PanelPainter {
  public:
   PanelPainter(plstream& pls, const Figure& fig) : pls_(pls), fig_(fig) {}
 
-  // Draws panel `p` into grid cell `cell` (row-major).
+  // Draws panel `p` into the grid from cell `cell` (row-major) over its columns_spanned.
   void draw(const Panel& p, int cell) {
-    const int col = cell % fig_.columns, row = cell / fig_.columns;
-    const double top_reserve = fig_.title.empty() ? 0.0 : 0.05;
+    const int col = cell % fig_.columns, row = cell / fig_.columns, span = p.columns_spanned;
+    // Page fractions of the grid cell; the margins are absolute sizes (px) so labels fit
+    // whatever the page size: tick labels and axis titles, the legend rows under the panel.
+    const double top_reserve = fig_.title.empty() ? 0.0 : kTitleHeightPx / fig_.height_px;
     const double cw = 1.0 / fig_.columns, ch = (1.0 - top_reserve) / fig_.rows;
-    // Room for tick labels and axis titles: absolute sizes in page fractions.
-    const double left = 95.0 / fig_.width_px, right = 20.0 / fig_.width_px;
-    const double bottom = 55.0 / fig_.height_px, top = 35.0 / fig_.height_px;
-    double x0 = col * cw + left, x1 = (col + 1) * cw - right;
+    const int legend_rows = (legend_entries(p) + legend_columns(p) - 1) / legend_columns(p);
+    const double left = 125.0 / fig_.width_px, right = 25.0 / fig_.width_px;
+    const double bottom = (kAxisBelowPx + legend_rows * kLegendRowPx) / fig_.height_px;
+    const double top = 40.0 / fig_.height_px;
+    double x0 = col * cw + left, x1 = (col + span) * cw - right;
     double y1 = 1.0 - top_reserve - row * ch - top, y0 = 1.0 - top_reserve - (row + 1) * ch + bottom;
 
     Extent ex, ey;
@@ -192,12 +219,21 @@ class PanelPainter {
 
     pls_.col0(colour_index(Colour::kBlack));
     pls_.width(1.0);
-    pls_.box(("bcnst" + xopt).c_str(), 0.0, 0, ("bcnstv" + yopt).c_str(), 0.0, 0);
+    pls_.box(("bcnst" + xopt).c_str(), 0.0, 0, ("bcnst" + yopt).c_str(), 0.0, 0);
     pls_.lab(p.x_label.c_str(), p.y_label.c_str(), p.title.c_str());
-    if (p.legend) draw_legend(p);
+    if (legend_entries(p) > 0) draw_legend(p, (y1 - y0) * fig_.height_px);
   }
 
  private:
+  static int legend_entries(const Panel& p) {
+    if (!p.legend) return 0;
+    int n = 0;
+    for (const Band& b : p.bands) n += !b.label.empty();
+    for (const Series& s : p.series) n += !s.label.empty();
+    return n;
+  }
+  static int legend_columns(const Panel& p) { return p.columns_spanned; }
+
   void draw_series(const Series& s, const Panel& p) {
     pls_.col0(colour_index(s.colour));
     pls_.width(s.width);
@@ -210,7 +246,8 @@ class PanelPainter {
     pls_.lsty(1);
   }
 
-  void draw_legend(const Panel& p) {
+  // The legend goes under the panel's axis title, so it never hides data.
+  void draw_legend(const Panel& p, double viewport_height_px) {
     std::vector<PLINT> opt, text_colour, box_colour, box_pattern, line_colour, line_style,
         symbol_colour, symbol_number;
     std::vector<PLFLT> box_scale, box_width, line_width, symbol_scale;
@@ -247,13 +284,15 @@ class PanelPainter {
       symbol_number.push_back(s.marker == Marker::kNone ? 0 : 1);
       symbol.push_back(marker_glyph(s.marker));
     }
-    if (opt.empty()) return;
     PLFLT width = 0, height = 0;
     pls_.width(1.0);
-    pls_.legend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-                PL_POSITION_TOP | PL_POSITION_RIGHT | PL_POSITION_INSIDE, 0.01, 0.01, 0.06,
-                0, colour_index(Colour::kGrey), 1, 0, 0, static_cast<PLINT>(opt.size()),
-                opt.data(), 0.8, 0.7, 1.8, 0.0, text_colour.data(), text.data(),
+    const PLINT columns = legend_columns(p);
+    const PLINT rows = (static_cast<PLINT>(opt.size()) + columns - 1) / columns;
+    pls_.legend(&width, &height, PL_LEGEND_ROW_MAJOR,
+                PL_POSITION_BOTTOM | PL_POSITION_OUTSIDE, 0.0,
+                (kAxisBelowPx + 5.0) / viewport_height_px, 0.05 / p.columns_spanned, 0,
+                colour_index(Colour::kGrey), 1, rows, columns, static_cast<PLINT>(opt.size()),
+                opt.data(), 0.8, 0.7, 1.5, 0.0, text_colour.data(), text.data(),
                 box_colour.data(), box_pattern.data(), box_scale.data(), box_width.data(),
                 line_colour.data(), line_style.data(), line_width.data(),
                 symbol_colour.data(), symbol_scale.data(), symbol_number.data(),
@@ -292,18 +331,18 @@ std::string render_svg(const Figure& figure) {
     pls.scol0a(kGridColour, 225, 225, 225, 1.0);
     pls.init();
     pls.adv(0);
-    pls.schr(0, 0.8);
+    pls.schr(0, kTextScale);
     if (!figure.title.empty()) {
-      pls.vpor(0.0, 1.0, 0.95, 1.0);
+      pls.vpor(0.0, 1.0, 1.0 - kTitleHeightPx / figure.height_px, 1.0);
       pls.wind(0.0, 1.0, 0.0, 1.0);
       pls.col0(colour_index(Colour::kBlack));
       pls.schr(0, 1.0);
-      pls.ptex(0.5, 0.4, 1.0, 0.0, 0.5, figure.title.c_str());
-      pls.schr(0, 0.8);
+      pls.ptex(0.5, 0.5, 1.0, 0.0, 0.5, figure.title.c_str());
+      pls.schr(0, kTextScale);
     }
     PanelPainter painter(pls, figure);
-    for (size_t i = 0; i < figure.panels.size(); ++i)
-      painter.draw(figure.panels[i], static_cast<int>(i));
+    const std::vector<int> cells = first_cells(figure);
+    for (size_t i = 0; i < figure.panels.size(); ++i) painter.draw(figure.panels[i], cells[i]);
   }  // ~plstream ends the page and flushes the document into `out`
   std::string svg(buffer ? buffer : "", size);
   std::free(buffer);

@@ -55,17 +55,19 @@ struct Panel {
   std::vector<Series> series;
   std::vector<Box> boxes;
   bool legend = true;            // when any series or band has a label
+  int columns_spanned = 1;       // grid cells the panel takes in its row
 };
 
 struct Figure {
   std::string title;           // over the whole page; may be empty
   int columns = 1, rows = 1;   // panels fill the grid row by row
   int width_px = 1000, height_px = 700;
-  std::vector<Panel> panels;   // at most columns * rows
+  std::vector<Panel> panels;   // fill the grid row by row, each over its columns_spanned
 };
 
 // The figure as an SVG document. Throws std::invalid_argument for a malformed figure
-// (series with x and y of different lengths, too many panels, an empty log range).
+// (series with x and y of different lengths, panels that do not fit the grid, a
+// non-positive log range).
 std::string render_svg(const Figure& figure);
 
 }  // namespace ncinterp::plot

@@ -85,6 +85,27 @@ TEST_F(CheckCli, PassingTapeExitsZeroAndWritesTheReport) {
   EXPECT_TRUE(j["total_error"]["at"].contains("block"));
 }
 
+TEST_F(CheckCli, SvgShowsThePartTheWorstPointAndTheErrorAlongThePath) {
+  const std::string tape = circle_tape();
+  const fs::path report = dir_ / "r.json", svg = dir_ / "p.svg";
+  const CliRun r = ncinterp("check " + tape + " --contour " + example_path("circle_r50.json") +
+                         " --reader-cps 100000 --report " + report.string() + " --svg " + svg.string());
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const std::string doc = slurp(svg);
+  EXPECT_EQ(doc.rfind("<?xml", 0), 0u);
+  EXPECT_NE(doc.find("</svg>"), std::string::npos);
+  // PLplot writes text character by character as entities: decode to find the labels.
+  std::string text;
+  for (size_t at = doc.find("&#x"); at != std::string::npos; at = doc.find("&#x", at + 1))
+    text += static_cast<char>(std::stoul(doc.substr(at + 3, doc.find(';', at) - at - 3), nullptr, 16));
+  const auto j = nlohmann::json::parse(slurp(report));
+  const std::string worst_block = "N" + std::to_string(j["total_error"]["at"]["block"].get<int>());
+  for (const std::string& label : {std::string("worst point: ") + worst_block, std::string("tolerance (0 to 10.0 "),
+                                   std::string("pulse path"), std::string("contour"), std::string("x (mm)"),
+                                   std::string("path length (mm)")})
+    EXPECT_NE(text.find(label), std::string::npos) << label;
+}
+
 TEST_F(CheckCli, TotalErrorOverTolExitsTwoAndNamesTheBlock) {
   const std::string tape = circle_tape(0.05);  // chords 5x coarser than the check's tol
   const fs::path report = dir_ / "r.json";
