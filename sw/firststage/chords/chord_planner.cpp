@@ -17,6 +17,13 @@ constexpr double kFirstMargin = 0.25;
 constexpr double kRetryStep = 0.5;
 constexpr int kRetries = 4;
 
+// Floating-point noise allowed on top of delta, relative to the coordinates' size: the
+// deviation of a chord whose end is exactly delta off the curve (a method-3 end rounded
+// outward) evaluates to delta + a few ulps; without this the next chord, which starts
+// there, would be rejected for every end and the planner would find none. 1e-12 of the
+// coordinates is 2e-9 BLU for a 2 mm circle at 1 um, far below anything physical.
+constexpr double kRoundoff = 1e-12;
+
 int64_t inf_norm(GridPoint a, GridPoint b) {
   return std::max(std::llabs(a.x - b.x), std::llabs(a.y - b.y));
 }
@@ -28,7 +35,8 @@ GridPoint round_to_grid(Vec2 v) { return {std::llround(v.x), std::llround(v.y)};
 bool ChordPlanner::admissible(const Span& span, GridPoint p, double ta, GridPoint q,
                               double tb) const {
   if (q == p || !(tb > ta) || inf_norm(p, q) > opt_.max_inc) return false;
-  return chord_deviation(span, to_vec(p), to_vec(q), ta, tb) <= opt_.delta;
+  const double noise = kRoundoff * (1.0 + static_cast<double>(std::max(inf_norm(p, {}), inf_norm(q, {}))));
+  return chord_deviation(span, to_vec(p), to_vec(q), ta, tb) <= opt_.delta + noise;
 }
 
 bool ChordPlanner::round_end(const Span& span, GridPoint p, double ta, Vec2 e, double te,

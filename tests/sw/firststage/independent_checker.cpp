@@ -1,4 +1,9 @@
 // Test-side deviation checker (see independent_checker.h).
+// The exact ("wide") search scans the whole other polyline but skips by the triangle
+// inequality: from a vertex at distance D from the query point, every point within an
+// arc length D - best along the polyline is farther than best, so the scan jumps there
+// (binary search in the cumulative lengths). Far parts of the polyline cost a few jumps;
+// the result is the brute-force minimum over every segment.
 #include "independent_checker.h"
 
 #include <algorithm>
@@ -8,6 +13,10 @@
 namespace ncinterp::test {
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double dist(P2 a, P2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
 double seg_dist(P2 p, P2 a, P2 b) {
   const double vx = b.x - a.x, vy = b.y - a.y;
   const double l2 = vx * vx + vy * vy;
@@ -16,55 +25,119 @@ double seg_dist(P2 p, P2 a, P2 b) {
   return std::hypot(p.x - (a.x + t * vx), p.y - (a.y + t * vy));
 }
 
+// A polyline with its cumulative lengths, for the skipping scan.
+class Polyline {
+ public:
+  explicit Polyline(const std::vector<P2>& pts) : p_(pts), s_(pts.size(), 0.0) {
+    for (size_t i = 1; i < pts.size(); ++i) s_[i] = s_[i - 1] + dist(pts[i - 1], pts[i]);
+  }
+  long segments() const { return static_cast<long>(p_.size()) - 1; }
+  const P2& operator[](long i) const { return p_[static_cast<size_t>(i)]; }
+  double length() const { return s_.back(); }
+  // Minimum over every segment m of measure(m), where measure(m) >= the distance from q
+  // to segment m (so segments farther than the best so far can be skipped). `best` and
+  // `at` hold an upper bound and its segment on entry (kInf / -1 for none).
+  template <class Measure>
+  void scan(P2 q, Measure measure, double* best, long* at) const {
+    for (long m = 0; m < segments();) {
+      const double v = measure(m);
+      if (v < *best) *best = v, *at = m;
+      const double reach = s_[static_cast<size_t>(m)] + dist(q, p_[static_cast<size_t>(m)]) - *best;
+      // First segment whose far end lies beyond `reach`: everything before is too far.
+      const long next = static_cast<long>(std::upper_bound(s_.begin(), s_.end(), reach) - s_.begin()) - 1;
+      m = std::max(m + 1, next);
+    }
+  }
+
+ private:
+  const std::vector<P2>& p_;
+  std::vector<double> s_;
+};
+
+// Distance along the normal (nx, ny) at c to path segment j; infinity when the normal's
+// line misses the segment.
+double normal_hit(P2 c, double nx, double ny, const Polyline& path, long j) {
+  const P2 a = path[j], b = path[j + 1];
+  const double ex = b.x - a.x, ey = b.y - a.y;
+  const double den = nx * ey - ny * ex;  // cross(n, e)
+  if (std::fabs(den) < 1e-15) return kInf;
+  const double ax = a.x - c.x, ay = a.y - c.y;
+  const double s = (ax * ey - ay * ex) / den;  // along the normal
+  const double t = (ax * ny - ay * nx) / den;  // along the path segment
+  if (t < -1e-12 || t > 1 + 1e-12) return kInf;
+  return std::fabs(s);
+}
+
 }  // namespace
 
-CheckResult check_path(const std::vector<P2>& curve, const std::vector<P2>& path, double step) {
+CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& path_pts,
+                       double step) {
   CheckResult r;
-  const long nc = static_cast<long>(curve.size()), np = static_cast<long>(path.size());
-  // Normal measure: curve samples in order, path segments near a moving pointer.
+  if (curve_pts.size() < 2 || path_pts.size() < 2) {
+    r.unmatched = static_cast<long>(curve_pts.size());
+    return r;
+  }
+  const Polyline curve(curve_pts), path(path_pts);
+  const long nc = curve.segments() + 1, np = path.segments();
+  const double spacing = curve.length() / static_cast<double>(nc - 1);
+
+  // Normal measure: curve samples in order, path segments near a pointer.
+  const P2 c_front = curve[0], c_back = curve[nc - 1];
+  const double front_gap = dist(path[0], c_front) + spacing;
+  const double back_gap = dist(path[np], c_back) + spacing;
   long k = 0;
   for (long i = 1; i + 1 < nc; ++i) {
+    const P2 c = curve[i];
     const double tx = curve[i + 1].x - curve[i - 1].x, ty = curve[i + 1].y - curve[i - 1].y;
     const double tl = std::hypot(tx, ty);
+    if (tl == 0.0) continue;
     const double nx = -ty / tl, ny = tx / tl;
-    double best = std::numeric_limits<double>::infinity();
-    long best_k = k;
-    for (long j = std::max(0L, k - 3); j < std::min(np - 1, k + 200); ++j) {
-      const double ex = path[j + 1].x - path[j].x, ey = path[j + 1].y - path[j].y;
-      const double den = nx * ey - ny * ex;  // cross(n, e)
-      if (std::fabs(den) < 1e-15) continue;
-      const double ax = path[j].x - curve[i].x, ay = path[j].y - curve[i].y;
-      const double s = (ax * ey - ay * ex) / den;   // along the normal
-      const double t = (ax * ny - ay * nx) / den;   // along the path segment
-      if (t < -1e-12 || t > 1 + 1e-12) continue;
-      if (std::fabs(s) < best) best = std::fabs(s), best_k = j;
+    ++r.samples;
+    double best = kInf;
+    long at = -1;
+    for (long j = std::max(0L, k - 2); j < std::min(np, k + 4); ++j) {
+      const double v = normal_hit(c, nx, ny, path, j);
+      if (v < best) best = v, at = j;
+    }
+    if (best > r.normal_max) {  // a new maximum, or a miss: measure exactly
+      ++r.wide_searches;
+      path.scan(c, [&](long j) { return normal_hit(c, nx, ny, path, j); }, &best, &at);
     }
     if (!std::isfinite(best)) {
-      ++r.unmatched;
-      continue;
+      if (dist(c, c_front) <= front_gap) best = seg_dist(c, path[0], path[1]);
+      else if (dist(c, c_back) <= back_gap) best = seg_dist(c, path[np - 1], path[np]);
+      else ++r.unmatched;
+      if (!std::isfinite(best)) continue;
+    } else {
+      k = at;
     }
-    k = best_k;
     r.normal_max = std::max(r.normal_max, best);
   }
-  // Path measure: points along each path segment, curve segments near a moving pointer.
-  double curve_len = 0.0;
-  for (long i = 0; i + 1 < nc; ++i) curve_len += std::hypot(curve[i + 1].x - curve[i].x, curve[i + 1].y - curve[i].y);
-  const double spacing = curve_len / std::max(1L, nc - 1);
-  long c = 0;
-  for (long j = 0; j + 1 < np; ++j) {
-    const double len = std::hypot(path[j + 1].x - path[j].x, path[j + 1].y - path[j].y);
-    const long parts = std::max(1L, static_cast<long>(std::ceil(len / step)));
-    for (long q = 0; q <= parts; ++q) {
+
+  // Path measure: points every `step` along the path, curve segments near a pointer.
+  long ci = 0;
+  for (long j = 0; j < np; ++j) {
+    const P2 a = path[j], b = path[j + 1];
+    const long parts = std::max(1L, static_cast<long>(std::ceil(dist(a, b) / step)));
+    for (long q = j == 0 ? 0 : 1; q <= parts; ++q) {
       const double f = static_cast<double>(q) / parts;
-      const P2 p{path[j].x + f * (path[j + 1].x - path[j].x), path[j].y + f * (path[j + 1].y - path[j].y)};
-      double best = std::numeric_limits<double>::infinity();
-      long best_c = c;
-      const long window = static_cast<long>(2.0 * len / spacing) + 50;
-      for (long i = std::max(0L, c - window); i < std::min(nc - 1, c + window); ++i) {
-        const double d = seg_dist(p, curve[i], curve[i + 1]);
-        if (d < best) best = d, best_c = i;
+      const P2 p{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+      ++r.samples;
+      // Descent from the pointer, a few segments of patience each way.
+      double best = seg_dist(p, curve[ci], curve[ci + 1]);
+      long at = ci;
+      for (const long dir : {1L, -1L}) {
+        for (long m = at + dir, misses = 0; m >= 0 && m < nc - 1 && misses < 4; m += dir) {
+          const double v = seg_dist(p, curve[m], curve[m + 1]);
+          if (v < best) best = v, at = m, misses = 0;
+          else ++misses;
+        }
       }
-      c = best_c;
+      if (best > r.path_max) {
+        ++r.wide_searches;
+        curve.scan(p, [&](long m) { return seg_dist(p, curve[m], curve[m + 1]); }, &best, &at);
+      }
+      ci = at;
       r.path_max = std::max(r.path_max, best);
     }
   }

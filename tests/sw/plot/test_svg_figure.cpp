@@ -96,6 +96,18 @@ TEST(SvgFigure, MalformedFiguresAreRefused) {
   Figure two;
   two.panels.resize(2);
   EXPECT_THROW(render_svg(two), std::invalid_argument);
+  Figure wide;
+  wide.columns = 2;
+  wide.panels.resize(1);
+  wide.panels[0].columns_spanned = 3;
+  EXPECT_THROW(render_svg(wide), std::invalid_argument);
+  Figure overflow;  // 1 + 2 columns: the wide panel starts row 2, which does not exist
+  overflow.columns = 2;
+  overflow.panels.resize(2);
+  overflow.panels[1].columns_spanned = 2;
+  EXPECT_THROW(render_svg(overflow), std::invalid_argument);
+  overflow.rows = 2;
+  EXPECT_NO_THROW(render_svg(overflow));
   Panel log;
   log.x_scale = Scale::kLog10;
   log.x_range = Range{0.0, 1.0};
