@@ -71,7 +71,7 @@ double normal_hit(P2 c, double nx, double ny, const Polyline& path, long j) {
 }  // namespace
 
 CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& path_pts,
-                       double step) {
+                       double step, const std::vector<P2>& corners) {
   CheckResult r;
   if (curve_pts.size() < 2 || path_pts.size() < 2) {
     r.unmatched = static_cast<long>(curve_pts.size());
@@ -81,37 +81,53 @@ CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& 
   const long nc = curve.segments() + 1, np = path.segments();
   const double spacing = curve.length() / static_cast<double>(nc - 1);
 
+  // Corner zones: centre and radius (the nearest path vertex, plus one sample spacing).
+  std::vector<std::pair<P2, double>> zones;
+  std::vector<P2> zone_centres = corners;
+  zone_centres.push_back(curve[0]);
+  zone_centres.push_back(curve[nc - 1]);
+  for (const P2& z : zone_centres) {
+    double nearest = kInf;
+    for (long j = 0; j <= np; ++j) nearest = std::min(nearest, dist(z, path[j]));
+    zones.push_back({z, nearest + spacing});
+  }
+  const auto in_zone = [&](P2 c) {
+    for (const auto& z : zones)
+      if (dist(c, z.first) <= z.second) return true;
+    return false;
+  };
+
   // Normal measure: curve samples in order, path segments near a pointer.
-  const P2 c_front = curve[0], c_back = curve[nc - 1];
-  const double front_gap = dist(path[0], c_front) + spacing;
-  const double back_gap = dist(path[np], c_back) + spacing;
   long k = 0;
-  for (long i = 1; i + 1 < nc; ++i) {
+  for (long i = 0; i < nc; ++i) {
     const P2 c = curve[i];
-    const double tx = curve[i + 1].x - curve[i - 1].x, ty = curve[i + 1].y - curve[i - 1].y;
-    const double tl = std::hypot(tx, ty);
-    if (tl == 0.0) continue;
-    const double nx = -ty / tl, ny = tx / tl;
     ++r.samples;
     double best = kInf;
     long at = -1;
-    for (long j = std::max(0L, k - 2); j < std::min(np, k + 4); ++j) {
-      const double v = normal_hit(c, nx, ny, path, j);
-      if (v < best) best = v, at = j;
-    }
-    if (best > r.normal_max) {  // a new maximum, or a miss: measure exactly
-      ++r.wide_searches;
-      path.scan(c, [&](long j) { return normal_hit(c, nx, ny, path, j); }, &best, &at);
-    }
-    if (!std::isfinite(best)) {
-      if (dist(c, c_front) <= front_gap) best = seg_dist(c, path[0], path[1]);
-      else if (dist(c, c_back) <= back_gap) best = seg_dist(c, path[np - 1], path[np]);
-      else ++r.unmatched;
-      if (!std::isfinite(best)) continue;
+    if (in_zone(c)) {
+      ++r.corner_samples;
+      path.scan(c, [&](long j) { return seg_dist(c, path[j], path[j + 1]); }, &best, &at);
     } else {
+      const P2 prev = curve[std::max(0L, i - 1)], next = curve[std::min(nc - 1, i + 1)];
+      const double tx = next.x - prev.x, ty = next.y - prev.y;
+      const double tl = std::hypot(tx, ty);
+      if (tl == 0.0) continue;
+      const double nx = -ty / tl, ny = tx / tl;
+      for (long j = std::max(0L, k - 2); j < std::min(np, k + 4); ++j) {
+        const double v = normal_hit(c, nx, ny, path, j);
+        if (v < best) best = v, at = j;
+      }
+      if (best > r.normal_max) {  // a new maximum, or a miss: measure exactly
+        ++r.wide_searches;
+        path.scan(c, [&](long j) { return normal_hit(c, nx, ny, path, j); }, &best, &at);
+      }
+      if (!std::isfinite(best)) {
+        ++r.unmatched;
+        continue;
+      }
       k = at;
     }
-    r.normal_max = std::max(r.normal_max, best);
+    if (best > r.normal_max) r.normal_max = best, r.normal_worst = c;
   }
 
   // Path measure: points every `step` along the path, curve segments near a pointer.
@@ -138,7 +154,7 @@ CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& 
         curve.scan(p, [&](long m) { return seg_dist(p, curve[m], curve[m + 1]); }, &best, &at);
       }
       ci = at;
-      r.path_max = std::max(r.path_max, best);
+      if (best > r.path_max) r.path_max = best, r.path_worst = p;
     }
   }
   return r;

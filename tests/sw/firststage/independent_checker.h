@@ -24,16 +24,20 @@ struct P2 {
 struct CheckResult {
   double normal_max = 0.0;  // max over curve samples of the normal distance to the path
   double path_max = 0.0;    // max over path samples of the distance to the curve
-  // Curve samples whose normal meets no path segment. Near the ends of an open curve the
-  // path ends on the end point rounded to the grid, so a normal there may pass beside the
-  // path's end: such samples (closer to a curve end than the path's own end is, plus one
-  // sample spacing) are measured by their distance to the path's end instead and not
-  // counted here.
-  long unmatched = 0;
+  long unmatched = 0;       // curve samples (outside corner zones) whose normal meets no path segment
+  long corner_samples = 0;  // curve samples in corner zones (measured by Euclidean distance)
+  P2 normal_worst, path_worst;  // where each maximum was found (for failure messages)
   long samples = 0;         // curve + path samples measured
   long wide_searches = 0;   // samples that needed the wide window
 };
 
-CheckResult check_path(const std::vector<P2>& curve, const std::vector<P2>& path, double step);
+// `corners`: points of the curve where its tangent jumps (its two ends count as corners
+// too). The normal is undefined there, and the path's vertex there is the corner rounded
+// to the grid, so it may lie a little beyond or before it; a normal near the corner then
+// passes beside that vertex and meets a neighbouring chord far away, or nothing. Curve
+// samples closer to a corner than the path's nearest vertex is (plus one sample spacing)
+// are therefore measured by their Euclidean distance to the path instead.
+CheckResult check_path(const std::vector<P2>& curve, const std::vector<P2>& path, double step,
+                       const std::vector<P2>& corners = {});
 
 }  // namespace ncinterp::test

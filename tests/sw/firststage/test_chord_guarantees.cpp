@@ -27,7 +27,8 @@ struct Guarantees {
 
 // Runs the first stage and checks everything but the deviation bound, which it returns.
 Guarantees run_and_check(const Contour& c, const FirstStageOptions& o,
-                         const std::vector<P2>& curve, FirstStageResult* out = nullptr) {
+                         const std::vector<P2>& curve, FirstStageResult* out = nullptr,
+                         const std::vector<P2>& corners = {}) {
   const FirstStageResult r = run_first_stage(c, o);
   const int64_t max_inc = (int64_t{1} << o.width) - 1;
   int64_t x = r.start.x, y = r.start.y;
@@ -43,7 +44,7 @@ Guarantees run_and_check(const Contour& c, const FirstStageOptions& o,
   EXPECT_EQ(x, std::llround(end.x / o.blu_mm));
   EXPECT_EQ(y, std::llround(end.y / o.blu_mm));
   Guarantees g;
-  g.check = check_path(curve, path_mm(r, o.blu_mm), o.tol_mm / 8);
+  g.check = check_path(curve, path_mm(r, o.blu_mm), o.tol_mm / 8, corners);
   g.blocks = static_cast<long>(r.moves.size());
   EXPECT_EQ(g.check.unmatched, 0);
   if (out) *out = r;
@@ -137,10 +138,12 @@ TEST_P(Methods, AirfoilBothFormatsSameTapeWithinDelta) {
     o.method = GetParam();
     o.tol_mm = tol;
     FirstStageResult a, b;
-    const Guarantees g = run_and_check(selig, o, curve, &a);
+    // The trailing edge's two corners: the ends of the closing line.
+    const Vec2 te0 = selig.segments.back().start(), te1 = selig.segments.back().end();
+    const Guarantees g = run_and_check(selig, o, curve, &a, {{te0.x, te0.y}, {te1.x, te1.y}});
     run_first_stage(led, o);
     b = run_first_stage(led, o);
-    EXPECT_LE(g.check.normal_max, tol - 0.001 + kSlack);
+    EXPECT_LE(g.check.normal_max, tol - 0.001 + kSlack) << g.check.normal_worst.x << " " << g.check.normal_worst.y;
     EXPECT_LE(g.check.path_max, tol - 0.001 + kSlack);
     ASSERT_EQ(a.moves.size(), b.moves.size());
     for (size_t i = 0; i < a.moves.size(); ++i) EXPECT_TRUE(a.moves[i].to == b.moves[i].to);
@@ -158,7 +161,7 @@ TEST_P(Methods, NarrowRegisterSplitsChordsAndLines) {
     return P2{10 + 20 * std::cos(-M_PI / 2 + s * M_PI), 23 + 20 * std::sin(-M_PI / 2 + s * M_PI)};
   }, 100000);
   curve.insert(curve.end(), arc.begin() + 1, arc.end());
-  const Guarantees g = run_and_check(c, o, curve);
+  const Guarantees g = run_and_check(c, o, curve, nullptr, {{10, 3}});
   EXPECT_LE(g.check.path_max, 0.009 + kSlack);
   EXPECT_LE(g.check.normal_max, 0.009 + kSlack);
 }
