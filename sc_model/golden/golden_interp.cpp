@@ -20,9 +20,11 @@ void require(bool ok, const char* what) {
 }  // namespace
 
 GoldenInterp::GoldenInterp(const InterpConfig& cfg) : cfg_(cfg), decoder_(cfg) {
-  require(cfg.inc_width >= 1 && cfg.inc_width <= 30, "inc_width must be 1..30");
-  require(cfg.feed_width >= 1 && cfg.feed_width + cfg.inc_width <= 62,
-          "feed_width + inc_width must be <= 62");
+  // |dx|, |dy| are held in 32 bits; F << k (FeedWidth + IncWidth bits) in 64. The phase
+  // sum is formed only when not saturated (S < M < 2^62), so it cannot overflow.
+  require(cfg.inc_width >= 1 && cfg.inc_width <= 32, "inc_width must be 1..32");
+  require(cfg.feed_width >= 1 && cfg.feed_width + cfg.inc_width <= 64,
+          "feed_width + inc_width must be <= 64");
   require(cfg.modulus_width >= 1 && cfg.modulus_width <= 62, "modulus_width must be 1..62");
   require(cfg.pos_width >= 2 && cfg.pos_width <= 63, "pos_width must be 2..63");
   require(cfg.seq_width >= 1 && cfg.seq_width <= 32, "seq_width must be 1..32");
@@ -55,7 +57,7 @@ void GoldenInterp::load_block() {
   const DecodedBlock& b = next_;
   // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
   const unsigned k = bit_length(b.dx | b.dy);
-  kpow_ = 1u << k;
+  kpow_ = uint64_t{1} << k;
   rem_ = kpow_;
   acc_[0] = acc_[1] = kpow_ >> 1;
   inc_[0] = b.dx;

@@ -66,10 +66,11 @@ class GoldenInterp {
   uint64_t feed_step_ = 0;  // F << k
   uint64_t phase_ = 0;
   bool saturated_ = false;
-  uint32_t kpow_ = 0;       // 2^k, one-hot
-  uint32_t rem_ = 0;        // DDA iterations left in the block
-  uint32_t acc_[2] = {0, 0};
-  uint32_t inc_[2] = {0, 0};
+  // 64 bits: k goes up to IncWidth = 32, so 2^k and acc + inc need IncWidth + 1 bits.
+  uint64_t kpow_ = 0;       // 2^k, one-hot
+  uint64_t rem_ = 0;        // DDA iterations left in the block
+  uint64_t acc_[2] = {0, 0};
+  uint64_t inc_[2] = {0, 0};
   bool dir_[2] = {false, false};
   // Outputs: the output registers themselves.
   InterpOutputs out_;
@@ -110,7 +111,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     if (strobe) {
       --rem_;
       for (int a = 0; a < 2; ++a) {
-        const uint32_t sum = acc_[a] + inc_[a];
+        const uint64_t sum = acc_[a] + inc_[a];
         const bool carry = (sum & kpow_) != 0;
         acc_[a] = sum & ~kpow_;
         if (carry) {

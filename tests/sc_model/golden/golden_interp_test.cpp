@@ -40,8 +40,28 @@ TEST(GoldenInterp, OutputsAfterResetAreIdle) {
 
 TEST(GoldenInterp, RejectsWidthsItCannotModel) {
   InterpConfig cfg;
-  cfg.inc_width = 31;
+  cfg.inc_width = 33;
   EXPECT_THROW(GoldenInterp{cfg}, std::invalid_argument);
+}
+
+// The widest register the model takes (the bit-width sweep goes to W = 32): a block with
+// |dx| = 2^32 - 1 has k = 32, so 2^k and acc + inc need 33 bits. Saturated, it makes one
+// iteration per clock, and after j iterations X has exactly j pulses (2^31 + j (2^32 - 1)
+// < (j + 1) 2^32) and Y, with |dy| = 2^31, floor((j + 1) / 2).
+TEST(GoldenInterp, PlaysAFullWidthBlockAt32Bits) {
+  InterpConfig cfg = test::config_for_clock(1e6);
+  cfg.inc_width = 32;
+  const char* tape = "%\nG17 G21 G91 G93\nN1 G01 X4294967.295 Y-2147483.648 F4000000.000\nM02\n%\n";
+  GoldenInterp dut(cfg);
+  OutputRecorder rec;
+  const InterpOutputs out = run_golden(dut, frames_of(tape), 1, 300, rec);
+  ASSERT_FALSE(out.error) << "error code " << int(out.error_code);
+  ASSERT_EQ(rec.starts.size(), 1u);
+  EXPECT_TRUE(rec.starts[0].saturated);
+  const int64_t j = static_cast<int64_t>(dut.cycle() - rec.starts[0].cycle);
+  ASSERT_GT(j, 100);
+  EXPECT_EQ(out.pos_x, j);
+  EXPECT_EQ(out.pos_y, -((j + 1) / 2));
 }
 
 // One block, not saturated: pulses come exactly at the iterations the phase accumulator
