@@ -61,6 +61,8 @@ void validate_options(const FirstStageOptions& o) {
   if (!(o.feed_mm_min > 0)) throw std::invalid_argument("--feed must be > 0");
   if (!(o.budget_blu >= 0)) throw std::invalid_argument("--budget must be >= 0");
   if (!(o.cutter_radius_mm >= 0)) throw std::invalid_argument("--cutter-radius must be >= 0");
+  if (o.cutter_radius_mm > 0 && o.arcs_circle)
+    throw std::invalid_argument("the cutter offset works on chords: use --arcs chords with --cutter-radius");
   const double reserve = o.budget_blu + (o.cutter_radius_mm > 0 ? 1.0 : 0.0);
   if (o.tol_mm / o.blu_mm - reserve < 1.0)
     throw std::invalid_argument(
@@ -106,7 +108,7 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
   popt.delta = delta_blu;
   popt.max_inc = max_inc;
   ChordPlanner planner(popt);
-  res.start = round_to_grid(to_blu * contour.origin);
+  res.start = res.contour_start = round_to_grid(to_blu * contour.origin);
   GridPoint cur = res.start;
   std::vector<ChordEnd> ends;
   const int n = static_cast<int>(segs.size());

@@ -39,7 +39,9 @@ struct Move {
 struct FirstStageResult {
   GridPoint start;               // tape start, BLU (absolute)
   std::vector<Move> moves;
-  // The contour's own path (before any cutter offset): chords and arcs, same start.
+  // The contour's own path (before any cutter offset): chords and arcs from contour_start
+  // (the contour's origin on the grid; = start without an offset).
+  GridPoint contour_start;
   std::vector<Move> contour_moves;
   std::vector<int> chords_per_element;
   PlannerStats planner;

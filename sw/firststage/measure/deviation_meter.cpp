@@ -124,7 +124,9 @@ DeviationReport measure_deviation(const Contour& contour, GridPoint start,
     cur = to;
   }
   DeviationReport r;
-  const double cell = std::max(step_mm * 64, 1e-3);
+  // About 8 samples per cell: a query looks at the 3 x 3 cells around it (more only when
+  // the path is farther than a cell), so each costs a few dozen segment distances.
+  const double cell = std::max(step_mm * 8, 1e-6);
   const SegmentGrid curve_grid(curve, cell), path_grid(path, cell);
   r.path_to_contour_mm = farthest(path, curve_grid, &r.samples);
   r.contour_to_path_mm = farthest(curve, path_grid, &r.samples);

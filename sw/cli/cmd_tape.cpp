@@ -1,0 +1,186 @@
+// `ncinterp tape INPUT -o OUT.tape`: the first stage (sw/firststage, docs/first-stage.md).
+// Reads a contour (.json contour or reference-point table, .nc/.ngc/.gcode G-code, .dat
+// airfoil), replaces it by chords within --tol (Tamm's method 1, 2 or 3) or quadrant arc
+// blocks, offsets it for the cutter, rounds it to the BLU grid and writes the tape.
+// Idea: everything is built and checked in memory first (the tape text is read back with
+// the project's own tape reader, the deviation of the chord path from the contour is
+// measured), then each output is written atomically; a failure leaves no file behind.
+// Exit 0 on success; 1 on bad input (one line "FILE:LINE: what is wrong") or options.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "atomic_file.h"
+#include "command_registry.h"
+#include "firststage.h"
+#include "inputs/contour_inputs.h"
+#include "measure/deviation_meter.h"
+#include "tape/tape.h"
+
+namespace ncinterp::cli {
+namespace {
+
+using namespace ncinterp::firststage;
+
+struct TapeArgs {
+  std::string input, output, report;
+  std::string arcs = "chords", side = "left";
+  FirstStageOptions options;
+  double airfoil_chord_mm = 100.0;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+nlohmann::json mm_point(GridPoint g, double blu_mm) {
+  return nlohmann::json::array({g.x * blu_mm, g.y * blu_mm});
+}
+
+int run(TapeArgs a) {
+  FirstStageOptions& o = a.options;
+  o.arcs_circle = a.arcs == "circle";
+  o.side_left = a.side == "left";
+  validate_options(o);
+  const auto t0 = std::chrono::steady_clock::now();
+  InputOptions io;
+  io.airfoil_chord_mm = a.airfoil_chord_mm;
+  const Contour contour = read_contour(a.input, io);
+  const auto t_read = std::chrono::steady_clock::now();
+  const FirstStageResult res = run_first_stage(contour, o);
+  const double stage_s = seconds_since(t_read);
+
+  // The tape, in memory, read back by the project's reader: what it reads must be what
+  // was meant, or the command fails before writing anything.
+  const tape::Format format = tape_format(o);
+  const tape::Program program = make_program(res, o);
+  const std::string text = tape::format_program(program, format);
+  const std::vector<uint8_t> frames = tape::add_parity(text);
+  const tape::Program back = tape::parse_frames(frames, format);
+  if (back.blocks.size() != program.blocks.size())
+    throw std::logic_error("the tape reader read " + std::to_string(back.blocks.size()) +
+                           " blocks back, " + std::to_string(program.blocks.size()) + " written");
+
+  // Independent measure of the contour path (before the cutter offset) against the contour.
+  const auto t_measure = std::chrono::steady_clock::now();
+  const DeviationReport dev =
+      measure_deviation(contour, res.contour_start, res.contour_moves, o.blu_mm, o.tol_mm / 4);
+  const double measure_s = seconds_since(t_measure);
+
+  long lines = 0, arcs = 0, chords = 0;
+  for (const Move& m : res.moves) (m.kind == MoveKind::kLine ? lines : arcs) += 1;
+  nlohmann::json per_element = nlohmann::json::array();
+  for (size_t i = 0; i < res.chords_per_element.size(); ++i) {
+    chords += res.chords_per_element[i];
+    per_element.push_back({{"element", contour.element_names[i]}, {"chords", res.chords_per_element[i]}});
+  }
+  const bool is_frames = a.output.size() >= 5 && a.output.compare(a.output.size() - 5, 5, ".tape") == 0;
+  nlohmann::json report = {
+      {"input", a.input},
+      {"input_kind", input_kind_name(input_kind_of(a.input))},
+      {"output", a.output},
+      {"method", o.method},
+      {"tol_mm", o.tol_mm},
+      {"blu_mm", o.blu_mm},
+      {"width", o.width},
+      {"arcs", a.arcs},
+      {"zones", o.zones},
+      {"budget_blu", o.budget_blu},
+      {"cutter_radius_mm", o.cutter_radius_mm},
+      {"side", a.side},
+      {"feed_mm_min", o.feed_mm_min},
+      {"chord_delta_mm", res.chord_delta_mm},
+      {"start_mm", mm_point(res.start, o.blu_mm)},
+      {"blocks", program.blocks.size()},
+      {"line_blocks", lines},
+      {"arc_blocks", arcs},
+      {"chords", chords},
+      {"chords_per_element", per_element},
+      {"max_deviation_mm", dev.max_mm},
+      {"deviation",
+       {{"measure", "Hausdorff distance between the contour and its chord/arc path before the "
+                    "cutter offset, both sampled every tol/4"},
+        {"path_to_contour_mm", dev.path_to_contour_mm},
+        {"contour_to_path_mm", dev.contour_to_path_mm},
+        {"samples", dev.samples}}},
+      {"tape",
+       {{"frames", frames.size()},
+        {"bytes", is_frames ? frames.size() : text.size()},
+        {"paper_m", frames.size() * 0.00254}}},  // 10 frames per inch
+      {"planner",
+       {{"chords", res.planner.chords},
+        {"retries", res.planner.retries},
+        {"fallbacks", res.planner.fallbacks}}},
+      {"time_s",
+       {{"read", std::chrono::duration<double>(t_read - t0).count()},
+        {"first_stage", stage_s},
+        {"measure", measure_s}}},
+  };
+
+  tape::write_tape_file(a.output, program, format);
+  if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
+  std::printf("%s: %zu blocks (%ld chords, %ld arc blocks), %zu frames, max deviation %.4f mm "
+              "(tol %g mm)\n",
+              a.output.c_str(), program.blocks.size(), chords, arcs, frames.size(), dev.max_mm,
+              o.tol_mm);
+  if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
+  return 0;
+}
+
+const CommandRegistration registration("tape", [](CLI::App& app) {
+  auto args = std::make_shared<TapeArgs>();
+  FirstStageOptions& o = args->options;
+  CLI::App* cmd = app.add_subcommand("tape", "First stage: contour -> chords within --tol -> tape");
+  cmd->add_option("INPUT", args->input,
+                  "contour: .json (segments or reference-point table), .nc/.ngc/.gcode (G-code), "
+                  ".dat (airfoil, Selig or Lednicer)")
+      ->required();
+  cmd->add_option("-o,--output", args->output, "tape: .tape (frames with parity) or .nc (plain text)")
+      ->required();
+  cmd->add_option("--tol", o.tol_mm, "delta: how far the pulse path may be from the contour, mm")
+      ->capture_default_str();
+  cmd->add_option("--method", o.method, "1 trial, 2 one-sided, 3 two-sided chords (Tamm)")
+      ->check(CLI::IsMember({1, 2, 3}))
+      ->capture_default_str();
+  cmd->add_option("--blu", o.blu_mm, "basic length unit, mm (10^-k)")->capture_default_str();
+  cmd->add_option("--width", o.width, "increment register width W: |dx|,|dy| <= 2^W - 1 BLU")
+      ->capture_default_str();
+  cmd->add_option("--arcs", args->arcs, "circular arcs as chords or as quadrant arc blocks")
+      ->check(CLI::IsMember({"chords", "circle"}))
+      ->capture_default_str();
+  cmd->add_option("--cutter-radius", o.cutter_radius_mm, "tape the cutter centre at this radius, mm")
+      ->capture_default_str();
+  cmd->add_option("--side", args->side, "cutter side of the direction of travel (G41 left, G42 right)")
+      ->check(CLI::IsMember({"left", "right"}))
+      ->capture_default_str();
+  cmd->add_option("--feed", o.feed_mm_min, "feed, mm/min (written as inverse time, G93)")
+      ->capture_default_str();
+  cmd->add_flag("--zones", o.zones, "end chords at every reference point (joint), as in the paper");
+  cmd->add_option("--budget-blu", o.budget_blu, "interpolator's own error reserved from --tol, BLU")
+      ->capture_default_str();
+  cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm")
+      ->capture_default_str();
+  cmd->add_option("--report", args->report, "write a JSON report");
+  cmd->callback([args] {
+    try {
+      run(*args);
+    } catch (const InputError& e) {
+      std::cerr << e.what() << "\n";  // "FILE:LINE: what is wrong"
+      throw CommandExit{1};
+    } catch (const tape::TapeFormatError& e) {
+      std::cerr << "ncinterp tape: internal error: " << args->output << ": "
+                << tape::describe(e.info()) << "\n";
+      throw CommandExit{1};
+    } catch (const std::exception& e) {
+      std::cerr << "ncinterp tape: " << e.what() << "\n";
+      throw CommandExit{1};
+    }
+  });
+});
+
+}  // namespace
+}  // namespace ncinterp::cli
