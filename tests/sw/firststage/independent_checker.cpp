@@ -68,6 +68,27 @@ double normal_hit(P2 c, double nx, double ny, const Polyline& path, long j) {
   return std::fabs(s);
 }
 
+// Local minimum of the distance from p to the polyline's segments, by descent from the
+// segment *at with a few segments of patience each way; *at receives its segment. An
+// upper bound of the true distance (the exact one whenever the descent found the nearest).
+double descend(P2 p, const Polyline& line, long* at) {
+  double best = seg_dist(p, line[*at], line[*at + 1]);
+  const long start = *at;
+  for (const long dir : {1L, -1L}) {
+    for (long m = start + dir, misses = 0; m >= 0 && m < line.segments() && misses < 4; m += dir) {
+      const double v = seg_dist(p, line[m], line[m + 1]);
+      if (v < best) best = v, *at = m, misses = 0;
+      else ++misses;
+    }
+  }
+  return best;
+}
+
+double exact_distance(P2 p, const Polyline& line, long* at, double best) {
+  line.scan(p, [&](long m) { return seg_dist(p, line[m], line[m + 1]); }, &best, at);
+  return best;
+}
+
 }  // namespace
 
 CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& path_pts,
@@ -106,7 +127,7 @@ CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& 
     long at = -1;
     if (in_zone(c)) {
       ++r.corner_samples;
-      path.scan(c, [&](long j) { return seg_dist(c, path[j], path[j + 1]); }, &best, &at);
+      best = exact_distance(c, path, &at, kInf);
     } else {
       const P2 prev = curve[std::max(0L, i - 1)], next = curve[std::min(nc - 1, i + 1)];
       const double tx = next.x - prev.x, ty = next.y - prev.y;
@@ -139,23 +160,30 @@ CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& 
       const double f = static_cast<double>(q) / parts;
       const P2 p{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
       ++r.samples;
-      // Descent from the pointer, a few segments of patience each way.
-      double best = seg_dist(p, curve[ci], curve[ci + 1]);
-      long at = ci;
-      for (const long dir : {1L, -1L}) {
-        for (long m = at + dir, misses = 0; m >= 0 && m < nc - 1 && misses < 4; m += dir) {
-          const double v = seg_dist(p, curve[m], curve[m + 1]);
-          if (v < best) best = v, at = m, misses = 0;
-          else ++misses;
-        }
-      }
+      double best = descend(p, curve, &ci);
       if (best > r.path_max) {
         ++r.wide_searches;
-        curve.scan(p, [&](long m) { return seg_dist(p, curve[m], curve[m + 1]); }, &best, &at);
+        best = exact_distance(p, curve, &ci, best);
       }
-      ci = at;
       if (best > r.path_max) r.path_max = best, r.path_worst = p;
     }
+  }
+  return r;
+}
+
+DistanceRange distance_range(const std::vector<P2>& points,
+                             const std::vector<std::vector<P2>>& lines) {
+  DistanceRange r;
+  std::vector<Polyline> polylines;
+  for (const auto& l : lines)
+    if (l.size() >= 2) polylines.emplace_back(l);
+  std::vector<long> hint(polylines.size(), 0);
+  for (const P2& p : points) {
+    double d = kInf;
+    for (size_t k = 0; k < polylines.size(); ++k)
+      d = std::min(d, exact_distance(p, polylines[k], &hint[k], descend(p, polylines[k], &hint[k])));
+    if (d < r.min) r.min = d, r.at_min = p;
+    if (d > r.max) r.max = d, r.at_max = p;
   }
   return r;
 }

@@ -13,6 +13,7 @@
 // measured again over a wide window (the old brute force). The result is the brute-force
 // result, in time linear in the number of samples.
 #pragma once
+#include <limits>
 #include <vector>
 
 namespace ncinterp::test {
@@ -39,5 +40,16 @@ struct CheckResult {
 // are therefore measured by their Euclidean distance to the path instead.
 CheckResult check_path(const std::vector<P2>& curve, const std::vector<P2>& path, double step,
                        const std::vector<P2>& corners = {});
+
+// Min and max over `points` of the Euclidean distance to the nearest of the polylines
+// `lines` (exact). The cutter-offset tests use it: every contour point must be between
+// R - delta and R + delta from the cutter-centre path, every path point at least R - delta
+// from the contour (no gouge).
+struct DistanceRange {
+  double min = std::numeric_limits<double>::infinity();
+  double max = 0.0;
+  P2 at_min, at_max;
+};
+DistanceRange distance_range(const std::vector<P2>& points, const std::vector<std::vector<P2>>& lines);
 
 }  // namespace ncinterp::test
