@@ -21,12 +21,16 @@ class VerilatedInterp {
   static constexpr const char* kScope = "SystemC.interp";
 
   // The RTL is verilated with its default parameters: cfg must have them (only
-  // feed_modulus, an input port, is free).
+  // feed_modulus, an input port, is free). A width variant (sw/sweep/rtl_variant/: the
+  // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W.
   explicit VerilatedInterp(const InterpConfig& cfg)
       : context_(std::make_unique<VerilatedContext>()),
         model_(std::make_unique<Model>(context_.get(), kScope)),
         modulus_(cfg.feed_modulus) {
-    const InterpConfig rtl;
+    InterpConfig rtl;
+#ifdef NCINTERP_RTL_INC_WIDTH
+    rtl.inc_width = NCINTERP_RTL_INC_WIDTH;
+#endif
     if (cfg.inc_width != rtl.inc_width || cfg.frac_digits != rtl.frac_digits ||
         cfg.feed_width != rtl.feed_width || cfg.feed_frac_digits != rtl.feed_frac_digits ||
         cfg.pos_width != rtl.pos_width || cfg.seq_width != rtl.seq_width ||

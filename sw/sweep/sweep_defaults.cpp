@@ -1,0 +1,40 @@
+// This build's sweep setup (see sweep_defaults.h).
+#include "sweep_defaults.h"
+
+#include <iterator>
+
+#include "sweep_build_paths.h"
+
+namespace ncinterp::sweep {
+namespace {
+
+std::string or_default(const std::string& dir) { return dir.empty() ? default_cache_dir() : dir; }
+
+}  // namespace
+
+std::string default_cache_dir() { return build::kCacheDir; }
+
+SynthesisSetup default_synthesis_setup(const std::string& cache_dir) {
+  SynthesisSetup s;
+  s.rtl_sources.assign(std::begin(build::kRtlSources), std::end(build::kRtlSources));
+  s.fpga_top = std::string(build::kSweepSourceDir) + "/interp_fpga_top.sv";
+  s.cache_dir = or_default(cache_dir) + "/synth";
+  s.work_dir = or_default(cache_dir) + "/work";
+  return s;
+}
+
+RtlVariantSetup default_rtl_variant_setup(const std::string& cache_dir) {
+  RtlVariantSetup s;
+  s.project_dir = std::string(build::kSweepSourceDir) + "/rtl_variant";
+  s.source_dir = build::kSourceDir;
+  s.rtl_sources.assign(std::begin(build::kRtlSources), std::end(build::kRtlSources));
+  s.verilator_args.assign(std::begin(build::kVerilatorArgs), std::end(build::kVerilatorArgs));
+  s.golden_library = build::kGoldenLibrary;
+  s.cmake = build::kCmake;
+  s.generator = build::kGenerator;
+  s.cxx_compiler = build::kCxxCompiler;
+  s.build_root = or_default(cache_dir) + "/rtl";
+  return s;
+}
+
+}  // namespace ncinterp::sweep

@@ -1,0 +1,21 @@
+// The sweep's setup for this build: the RTL files, the place-and-route harness, the
+// variant project, the golden library and the cache directory under the build directory.
+// Idea: CMake knows where everything is (sweep_build_paths.h is generated from the same
+// lists the main build uses); the command and the tests start from these and override
+// what they need (a cache directory, a tool that is not on PATH, a broken RTL file).
+#pragma once
+#include <string>
+
+#include "rtl_variant.h"
+#include "synthesis.h"
+
+namespace ncinterp::sweep {
+
+// cache_dir: "" = the build's own (<build>/sweep-cache). Synthesis results go to
+// <cache_dir>/synth, logs and netlists to <cache_dir>/work.
+SynthesisSetup default_synthesis_setup(const std::string& cache_dir = "");
+// Variant build trees go to <cache_dir>/rtl.
+RtlVariantSetup default_rtl_variant_setup(const std::string& cache_dir = "");
+std::string default_cache_dir();
+
+}  // namespace ncinterp::sweep

@@ -1,0 +1,145 @@
+// Synthesis and place-and-route of the RTL at one width (see synthesis.h).
+#include "synthesis.h"
+
+#include <filesystem>
+#include <sstream>
+
+#include "subprocess.h"
+#include "synth_cache.h"
+#include "synth_logs.h"
+
+namespace ncinterp::sweep {
+namespace {
+
+// HX8K in its CT256 package: the part the issue names, 7680 logic cells.
+const char* const kPnrPart[] = {"--hx8k", "--package", "ct256"};
+
+std::string read_sources(const std::vector<std::string>& files) {
+  std::string s = "read_verilog -sv";
+  for (const std::string& f : files) s += " \"" + f + "\"";
+  return s + "; ";
+}
+
+std::string generic_script(const SynthesisSetup& s, unsigned w) {
+  return read_sources(s.rtl_sources) + "chparam -set IncWidth " + std::to_string(w) +
+         " interp_top; synth -top interp_top; stat";
+}
+
+std::string ice40_script(const SynthesisSetup& s, unsigned w) {
+  return read_sources(s.rtl_sources) + "chparam -set IncWidth " + std::to_string(w) +
+         " interp_top; synth_ice40 -top interp_top; stat";
+}
+
+std::string harness_script(const SynthesisSetup& s, unsigned w, const std::string& json) {
+  std::vector<std::string> files = s.rtl_sources;
+  files.push_back(s.fpga_top);
+  return read_sources(files) + "chparam -set IncWidth " + std::to_string(w) +
+         " interp_fpga_top; synth_ice40 -top interp_fpga_top -json \"" + json + "\"";
+}
+
+std::vector<std::string> pnr_command(const SynthesisSetup& s, const std::string& json) {
+  std::ostringstream freq;
+  freq << s.pnr_target_mhz;
+  std::vector<std::string> cmd = {s.nextpnr};
+  cmd.insert(cmd.end(), std::begin(kPnrPart), std::end(kPnrPart));
+  // --timing-allow-fail: a design slower than the target still gets its Fmax measured.
+  for (const std::string& a : {std::string("--json"), json, std::string("--freq"), freq.str(),
+                               std::string("--seed"), std::to_string(s.pnr_seed),
+                               std::string("--timing-allow-fail")})
+    cmd.push_back(a);
+  return cmd;
+}
+
+// Why a tool run gave no numbers: it did not start or was killed, or its log's first error.
+std::string failure_reason(const std::string& what, const ProcessOutcome& p, const std::string& log) {
+  if (!p.started || p.signal) return p.failure;
+  const std::string error = first_error_line(read_text_file(log));
+  return what + " failed: " + (error.empty() ? "exit code " + std::to_string(p.exit_code) : error);
+}
+
+// A tool run that did not start or was killed says nothing about the design: not cached.
+bool completed(const ProcessOutcome& p) { return p.started && p.signal == 0; }
+
+}  // namespace
+
+std::string synthesis_key(const SynthesisSetup& s) {
+  std::vector<std::string> files = s.rtl_sources;
+  files.push_back(s.fpga_top);
+  std::vector<std::string> extra = pnr_command(s, "");
+  for (const std::string& script : {generic_script(s, 0), ice40_script(s, 0), harness_script(s, 0, "")})
+    extra.push_back(script);
+  for (const std::string& tool : {s.yosys, s.nextpnr}) {
+    const std::string log = s.work_dir + "/" + std::filesystem::path(tool).filename().string() + ".version";
+    std::filesystem::create_directories(s.work_dir);
+    const ProcessOutcome p = run_process({tool, tool == s.yosys ? "-V" : "--version"}, log);
+    extra.push_back(p.ok() ? read_text_file(log) : "missing " + tool);
+  }
+  return content_hash(files, extra);
+}
+
+SynthResult synthesize(unsigned w, const SynthesisSetup& s, const std::string& key) {
+  const SynthCache cache(s.cache_dir, key);
+  if (std::optional<SynthResult> hit = cache.load(w)) return *hit;
+
+  SynthResult r;
+  const std::string dir = s.work_dir + "/w" + std::to_string(w);
+  std::filesystem::create_directories(dir);
+  bool cacheable = true;
+
+  // Generic cells and flip-flops.
+  {
+    const std::string log = dir + "/yosys_synth.log";
+    const ProcessOutcome p = run_process({s.yosys, "-p", generic_script(s, w)}, log);
+    cacheable &= completed(p);
+    const std::optional<YosysStat> stat = p.ok() ? parse_yosys_stat(read_text_file(log)) : std::nullopt;
+    if (stat) {
+      r.cells = Measured::of(static_cast<double>(stat->cells));
+      r.flip_flops = Measured::of(static_cast<double>(stat->flip_flops()));
+    } else {
+      r.cells = r.flip_flops =
+          Measured::absent(p.ok() ? "yosys synth: no statistics in " + log : failure_reason("yosys synth", p, log));
+    }
+  }
+  // iCE40 LUTs of interp_top itself.
+  {
+    const std::string log = dir + "/yosys_synth_ice40.log";
+    const ProcessOutcome p = run_process({s.yosys, "-p", ice40_script(s, w)}, log);
+    cacheable &= completed(p);
+    const std::optional<YosysStat> stat = p.ok() ? parse_yosys_stat(read_text_file(log)) : std::nullopt;
+    r.ice40_luts = stat ? Measured::of(static_cast<double>(stat->count("SB_LUT4")))
+                        : Measured::absent(p.ok() ? "synth_ice40: no statistics in " + log
+                                                  : failure_reason("yosys synth_ice40", p, log));
+  }
+  // Placement and routing of the harness on the HX8K: logic cells and Fmax.
+  {
+    const std::string json = dir + "/interp_fpga_top.json";
+    const std::string ylog = dir + "/yosys_harness.log";
+    const ProcessOutcome y = run_process({s.yosys, "-p", harness_script(s, w, json)}, ylog);
+    cacheable &= completed(y);
+    if (!y.ok()) {
+      r.ice40_logic_cells = r.fmax_mhz = Measured::absent(failure_reason("yosys synth_ice40 (harness)", y, ylog));
+    } else {
+      const std::string log = dir + "/nextpnr.log";
+      const ProcessOutcome p = run_process(pnr_command(s, json), log);
+      cacheable &= completed(p);
+      const NextpnrReport rep = completed(p) ? parse_nextpnr_log(read_text_file(log)) : NextpnrReport{};
+      if (rep.logic_cells) r.ice40_logic_cells = Measured::of(static_cast<double>(*rep.logic_cells));
+      if (p.ok() && rep.fmax_mhz) {
+        r.fmax_mhz = Measured::of(*rep.fmax_mhz);
+      } else {
+        std::string why = failure_reason("nextpnr-ice40", p, log);
+        if (rep.logic_cells && rep.logic_cells_available && *rep.logic_cells > *rep.logic_cells_available)
+          why = "too big for the HX8K: " + std::to_string(*rep.logic_cells) + " of " +
+                std::to_string(*rep.logic_cells_available) + " logic cells";
+        else if (p.ok())
+          why = "nextpnr-ice40: no \"Max frequency\" in " + log;
+        r.fmax_mhz = Measured::absent(why);
+        if (!rep.logic_cells) r.ice40_logic_cells = Measured::absent(why);
+      }
+    }
+  }
+  if (cacheable) cache.store(w, r);
+  return r;
+}
+
+}  // namespace ncinterp::sweep

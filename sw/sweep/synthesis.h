@@ -1,0 +1,35 @@
+// Hardware cost of the interpolator RTL at one increment-register width W: yosys generic
+// synthesis (cells, flip-flops), yosys synth_ice40 (LUTs), nextpnr-ice40 on an HX8K
+// (placed logic cells, Fmax).
+// Idea: every number comes from a tool run at that W (`chparam -set IncWidth W`); a tool
+// that is missing or fails leaves its columns empty with the reason (first error line of
+// its log, kept in the work directory). interp_top has more ports than the HX8K's CT256
+// package has pins, so placement and Fmax use the harness interp_fpga_top.sv, which adds
+// only edge registers; the LUT count is interp_top's own.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "sweep_row.h"
+
+namespace ncinterp::sweep {
+
+struct SynthesisSetup {
+  std::vector<std::string> rtl_sources;  // interp_top and its modules (rtl/CMakeLists.txt)
+  std::string fpga_top;                  // interp_fpga_top.sv
+  std::string yosys = "yosys";
+  std::string nextpnr = "nextpnr-ice40";
+  std::string work_dir;                  // logs and netlists go to <work_dir>/w<W>/
+  std::string cache_dir;                 // results per (hash, W); empty: no cache
+  double pnr_target_mhz = 50.0;          // nextpnr's timing target (--freq)
+  unsigned pnr_seed = 1;                 // placement seed, fixed so reruns agree
+};
+
+// The cache key of this setup: RTL and harness contents, commands, tool versions.
+std::string synthesis_key(const SynthesisSetup& setup);
+
+// Synthesises (or takes from the cache under `key`) the RTL at width W. Never throws for a
+// tool failure: each value is measured or carries its reason.
+SynthResult synthesize(unsigned width, const SynthesisSetup& setup, const std::string& key);
+
+}  // namespace ncinterp::sweep
