@@ -1,7 +1,8 @@
 // SVG of the methods study (see methods_plot.h), drawn with sw/plot.
-// Idea: errors are divided by R, so in double every radius falls on one curve and the
-// slope on the log axes is the order in h; fixed point, which depends on R through the
-// word's quantum, gets one dashed curve per radius.
+// Idea: errors are divided by R, so on log axes a method's curve is a straight line whose
+// slope is its order in h and whose height at h = 1 is its constant; the paper's formula
+// in the same colour shows at a glance where the paper is right. Points that round-off
+// decides (method_study.h) are left out, as they are of the fits.
 #include "methods_plot.h"
 
 #include <string>
@@ -13,86 +14,94 @@ namespace ncinterp::sampled {
 namespace {
 
 using plot::Colour;
-using plot::Marker;
 using plot::Series;
 
-Series series(std::string label, Colour colour, bool line, Marker marker) {
+Colour colour_of(Method m) {
+  switch (m) {
+    case Method::kL1: return Colour::kGrey;
+    case Method::kK1: return Colour::kRed;
+    case Method::kK2: return Colour::kBlue;
+    case Method::kK3: return Colour::kGreen;
+    case Method::kK4: return Colour::kOrange;
+    case Method::kK5: return Colour::kPurple;
+    case Method::kK6: return Colour::kBrown;
+    case Method::kK7: return Colour::kCyan;
+  }
+  return Colour::kBlack;
+}
+
+Series series_of(Method m, std::string label) {
   Series s;
   s.label = std::move(label);
-  s.colour = colour;
-  s.line = line;
-  s.marker = marker;
+  s.colour = colour_of(m);
+  s.marker = plot::Marker::kDot;
   return s;
 }
 
-std::string short_number(double v) {
-  std::string s = std::to_string(v);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
-
-plot::Panel panel_for(const Study& study, Method m) {
-  const double r0 = study.config.radii_mm.front();
+plot::Panel log_panel(std::string title, std::string y_label, int columns) {
   plot::Panel p;
-  p.title = std::string(method_name(m)) + " (" + method_description(m) + ")";
+  p.title = std::move(title);
   p.x_label = "h";
-  p.y_label = m == Method::kL1 ? "error / L" : "error / R";
+  p.y_label = std::move(y_label);
   p.x_scale = p.y_scale = plot::Scale::kLog10;
-  Series dbl = series(m == Method::kL1 ? "end point, double" : "quarter, double", Colour::kBlack, true, Marker::kDot);
-  Series floor = series("round-off limited", Colour::kGrey, false, Marker::kCross);
-  Series drift = series("drift per turn", Colour::kBlue, true, Marker::kNone);
-  Series paper = series("", Colour::kRed, true, Marker::kNone);
-  paper.dashed = true;
-  if (const PaperClaim* c = quarter_claim(m)) paper.label = std::string("paper: ") + c->formula;
-  const Colour fixed_colours[] = {Colour::kGreen, Colour::kOrange, Colour::kPurple, Colour::kBrown, Colour::kCyan};
-  std::vector<Series> fixed;
-  for (size_t i = 0; i < study.config.radii_mm.size(); ++i) {
-    Series f = series(std::to_string(study.config.word_bits) + "-bit, R " + short_number(study.config.radii_mm[i]) +
-                          " mm",
-                      fixed_colours[i % 5], true, Marker::kNone);
-    f.dashed = true;
-    fixed.push_back(f);
-  }
-  for (const StudyRow& r : study.rows) {
-    if (r.method != m) continue;
-    for (size_t i = 0; i < study.config.radii_mm.size(); ++i)
-      if (r.radius == study.config.radii_mm[i]) {
-        fixed[i].x.push_back(r.h);
-        fixed[i].y.push_back(r.fixed_error / r.radius);
-      }
-    if (r.radius != r0) continue;
-    // L1 in double lies on the line to round-off; what it gets wrong is the end point.
-    Series& target = m != Method::kL1 && r.roundoff_limited ? floor : dbl;
-    target.x.push_back(r.h);
-    target.y.push_back((m == Method::kL1 ? r.end_error : r.error) / r.radius);
-    if (r.drifts) {
-      drift.x.push_back(r.h);
-      drift.y.push_back(r.drift_per_turn / r.radius);
-    }
-    if (!paper.label.empty()) {
-      paper.x.push_back(r.h);
-      paper.y.push_back(r.paper_error / r.radius);
-    }
-  }
-  for (Series* s : {&dbl, &floor, &drift, &paper})
-    if (!s->x.empty()) p.series.push_back(*s);
-  for (Series& f : fixed) p.series.push_back(f);
+  p.columns_spanned = columns;
   return p;
 }
 
 }  // namespace
 
 std::string methods_svg(const Study& study) {
-  plot::Figure f;
-  f.title = "Reference-word interpolators (paper 003): error against h";
-  // Two panels a row, tall enough for the log axes' decade labels and the legends.
-  f.columns = 2;
-  f.rows = 4;
-  f.width_px = 1400;
-  f.height_px = 2600;
-  for (Method m : kAllMethods) f.panels.push_back(panel_for(study, m));
-  return plot::render_svg(f);
+  const double r0 = study.config.radii_mm.front();
+  plot::Panel quarter = log_panel(
+      "Quarter circle: largest radial error, double (dashed: the paper's formula)",
+      "error / R", 2);
+  // One legend for the figure: the lower panels use the same colours.
+  plot::Panel drift = log_panel("Growth of the error per turn, double", "drift per turn / R", 1);
+  plot::Panel fixed = log_panel("Quarter circle, " + std::to_string(study.config.word_bits) + "-bit fixed point",
+                                "error / R", 1);
+  drift.legend = fixed.legend = false;
+  for (Method m : kAllMethods) {
+    const std::string name = method_name(m);
+    Series q = series_of(m, m == Method::kL1 ? "L1 (end point / L)" : name + " (" + method_description(m) + ")");
+    q.line = m != Method::kL1;  // L1's end error jumps with the remainder of 1/h: points only
+    Series d = series_of(m, name), f = series_of(m, name);
+    Series paper = series_of(m, "");
+    paper.marker = plot::Marker::kNone;
+    paper.dashed = true;
+    const PaperClaim* claim = quarter_claim(m);
+    for (const StudyRow& r : study.rows) {
+      if (r.method != m || r.radius != r0) continue;
+      // L1 lies on its line to round-off; what it gets wrong is where it ends.
+      if (m == Method::kL1 || !r.roundoff_limited) {
+        q.x.push_back(r.h);
+        q.y.push_back((m == Method::kL1 ? r.end_error : r.error) / r.radius);
+      }
+      if (r.drifts) {
+        d.x.push_back(r.h);
+        d.y.push_back(r.drift_per_turn / r.radius);
+      }
+      if (m != Method::kL1) {
+        f.x.push_back(r.h);
+        f.y.push_back(r.fixed_error / r.radius);
+      }
+      if (claim) {
+        paper.x.push_back(r.h);
+        paper.y.push_back(r.paper_error / r.radius);
+      }
+    }
+    quarter.series.push_back(q);
+    if (claim) quarter.series.push_back(paper);
+    if (!d.x.empty()) drift.series.push_back(d);
+    if (!f.x.empty()) fixed.series.push_back(f);
+  }
+  plot::Figure fig;
+  fig.title = "Reference-word interpolators of paper 003: error against h";
+  fig.columns = 2;
+  fig.rows = 2;
+  fig.width_px = 1400;
+  fig.height_px = 1200;
+  fig.panels = {quarter, drift, fixed};
+  return plot::render_svg(fig);
 }
 
 }  // namespace ncinterp::sampled

@@ -1,4 +1,4 @@
-// The SVG of `ncinterp methods --svg`: error against h on log axes, one panel per method.
+// The SVG of `ncinterp methods --svg`: error against h on log axes, one curve per method.
 #pragma once
 #include <string>
 
@@ -6,8 +6,9 @@
 
 namespace ncinterp::sampled {
 
-// Per panel: the measured quarter-circle error / R in double (round-off limited points
-// apart), in fixed point for each radius, the drift per turn, and the paper's formula.
+// Top: the quarter-circle radial error / R of every method in double (L1: its end point
+// error / L) with the paper's formulas dashed in the method's colour. Below: the drift of
+// the error per turn, and the quarter error in fixed point (config.word_bits).
 std::string methods_svg(const Study& study);
 
 }  // namespace ncinterp::sampled
