@@ -30,6 +30,7 @@ namespace {
 struct SweepArgs {
   std::vector<std::string> inputs;
   std::string widths;
+  std::string arcs = "chords";
   firststage::FirstStageOptions first_stage;
   double airfoil_chord_mm = 100.0;
   double clock_hz = 1e6;
@@ -53,6 +54,7 @@ int run(const SweepArgs& a) {
   SweepSetup setup;
   setup.widths = parse_width_range(a.widths);
   setup.measure.first_stage = a.first_stage;
+  setup.measure.first_stage.arcs_circle = a.arcs == "circle";
   setup.measure.clock_hz = a.clock_hz;
   setup.measure.reader_cps = a.reader_cps;
   firststage::validate_options(a.first_stage);  // the width is checked per row
@@ -116,6 +118,9 @@ CommandRegistration registration("sweep", [](CLI::App& app) {
   cmd->add_option("--tol", args->first_stage.tol_mm, "delta: allowed total error, mm")->capture_default_str();
   cmd->add_option("--method", args->first_stage.method, "chord method (Tamm 1, 2 or 3)")
       ->check(CLI::IsMember({1, 2, 3}))
+      ->capture_default_str();
+  cmd->add_option("--arcs", args->arcs, "arcs of the contour as chords or as quadrant arc blocks (G02/G03)")
+      ->check(CLI::IsMember({"chords", "circle"}))
       ->capture_default_str();
   cmd->add_option("--blu", args->first_stage.blu_mm, "basic length unit, mm")->capture_default_str();
   cmd->add_option("--feed", args->first_stage.feed_mm_min, "feed, mm/min")->capture_default_str();
