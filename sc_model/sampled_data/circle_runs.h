@@ -13,12 +13,9 @@
 #include "arithmetic.h"
 #include "method.h"
 #include "op_count.h"
+#include "real_point.h"
 
 namespace ncinterp::sampled {
-
-struct RealPoint {
-  long double x = 0, y = 0;
-};
 
 struct QuarterRun {
   std::vector<RealPoint> points;   // the reference points, start included

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "arithmetic.h"
-#include "circle_runs.h"
 #include "op_count.h"
+#include "real_point.h"
 
 namespace ncinterp::sampled {
 

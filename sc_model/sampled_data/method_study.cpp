@@ -20,13 +20,6 @@ bool roundoff_limited(double in_double, double in_long_double) {
   return !(std::fabs(in_double - in_long_double) <= 0.01 * std::fabs(in_long_double));
 }
 
-double max_distance(const std::vector<RealPoint>& a, const std::vector<RealPoint>& b) {
-  double d = 0;
-  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
-    d = std::max(d, static_cast<double>(std::hypot(a[i].x - b[i].x, a[i].y - b[i].y)));
-  return d;
-}
-
 StudyRow line_row(double radius, double h, const StudyConfig& cfg) {
   const double angle = kLineAngleDeg * kPi / 180;
   const LineRun d = run_line(radius, angle, h, Arithmetic::double_precision());

@@ -28,7 +28,7 @@ struct MethodsArgs {
   std::string csv, svg;
 };
 
-int run(const MethodsArgs& a) {
+void run(const MethodsArgs& a) {
   sampled::StudyConfig cfg;
   cfg.radii_mm = a.radius_mm > 0 ? std::vector<double>{a.radius_mm} : sampled::default_radii_mm();
   cfg.hs = a.h > 0 ? std::vector<double>{a.h} : sampled::default_h_sweep();
@@ -55,7 +55,6 @@ int run(const MethodsArgs& a) {
   if (!a.svg.empty()) stage(a.svg, sampled::methods_svg(study));
   for (auto& out : outputs) out->commit();
   std::cout << text;
-  return 0;
 }
 
 CommandRegistration registration("methods", [](CLI::App& app) {
@@ -65,7 +64,7 @@ CommandRegistration registration("methods", [](CLI::App& app) {
   cmd->add_option("--radius", args->radius_mm, "one circle radius (and line length), mm (default: 1, 10 and 100)")
       ->check(CLI::Range(0.001, 1000.0));
   cmd->add_option("--h", args->h, "one step h = V T / R, radian per period (default: 1e-4 .. 1e-1)")
-      ->check(CLI::Range(1e-6, 0.5));
+      ->check(CLI::Range(1e-5, 0.5));
   cmd->add_option("--turns", args->turns, "turns run for the drift")->check(CLI::Range(2, 1000))->capture_default_str();
   cmd->add_option("--word-bits", args->word_bits, "fixed-point word length B, sign included")
       ->check(CLI::Range(8, 62))
@@ -74,7 +73,7 @@ CommandRegistration registration("methods", [](CLI::App& app) {
       ->check(CLI::IsMember({"k1", "k7"}))
       ->capture_default_str();
   cmd->add_option("--csv", args->csv, "every measured row (method, radius, h, errors, ...)");
-  cmd->add_option("--svg", args->svg, "error against h on log axes, one panel per method");
+  cmd->add_option("--svg", args->svg, "error against h on log axes, one curve per method");
   cmd->callback([args]() {
     try {
       run(*args);

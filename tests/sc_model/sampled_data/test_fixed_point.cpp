@@ -10,6 +10,7 @@
 #include "circle_runs.h"
 #include "fixed_arith.h"
 #include "line_run.h"
+#include "real_point.h"
 
 namespace ncinterp::sampled {
 namespace {
@@ -57,14 +58,6 @@ TEST(FixedPoint, LeavingTheWordThrows) {
   EXPECT_THROW(a.add(32000, 1000), std::overflow_error);
   EXPECT_THROW(a.sub(-32000, 1000), std::overflow_error);
   EXPECT_EQ(a.add(32000, 767), 32767);
-}
-
-// Largest distance between corresponding points of two runs.
-double max_distance(const std::vector<RealPoint>& a, const std::vector<RealPoint>& b) {
-  double d = 0;
-  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
-    d = std::max(d, static_cast<double>(std::hypot(a[i].x - b[i].x, a[i].y - b[i].y)));
-  return d;
 }
 
 TEST(FixedPoint, EveryCircleMethodFollowsDoubleWithinItsWordLength) {
