@@ -1,40 +1,37 @@
 // Feed generator: inverse-time feed (G93) as a phase accumulator of DDA iteration strobes.
 //
-// What: a block of 2^k DDA iterations must take 1/F minutes. Every clock the phase grows
-// by S = F << k and is compared with the modulus M = 60 * f_clk * 10^FeedFracDigits;
-// reaching M issues one iteration strobe and subtracts M. So 2^k iterations take M/F
-// clocks, rounded up (docs/interpolator.md 5.2). If S >= M the block wants more than one
-// iteration per clock: it is saturated and runs one iteration every clock instead.
+// What: a block of N DDA iterations (2^k for a line, the circle DDA's count for an arc)
+// must take 1/F minutes. Every clock the phase grows by the block's step S = F * N (the
+// decoder computes it) and is compared with the modulus M = 60 * f_clk * 10^FeedFracDigits;
+// reaching M issues one iteration strobe and subtracts M. So N iterations take M/F clocks,
+// rounded up (docs/interpolator.md 5.2). If S >= M the block wants more than one iteration
+// per clock: it is saturated and runs one iteration every clock instead.
 // Timing: at the load edge step_q = phase_q = S (the load clock counts as the first add)
 // and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
 // registers and acts in the same edge as the DDA iteration it triggers.
 module feed_generator #(
-  parameter int FeedWidth    = 32,
-  parameter int IncWidth     = 16,
-  parameter int ModulusWidth = 48,
-  parameter int KWidth       = $clog2(IncWidth + 1)
+  parameter int StepWidth    = 49,
+  parameter int ModulusWidth = 48
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
   input  logic                    load_i,     // a block loads at this edge
-  input  logic [FeedWidth-1:0]    feed_i,     // its F
-  input  logic [KWidth-1:0]       k_i,        // its k
+  input  logic [StepWidth-1:0]    step_i,     // its S = F * N
   input  logic                    run_i,      // the playing block has iterations left
   input  logic [ModulusWidth-1:0] modulus_i,  // feed_modulus_i (static)
   output logic                    strobe_o,   // one DDA iteration at this edge
   output logic                    saturated_o
 );
 
-  // phase + S < 2M when not saturated, and S itself needs FeedWidth + IncWidth bits.
-  localparam int SumWidth   = FeedWidth + IncWidth > ModulusWidth ? FeedWidth + IncWidth
-                                                                           : ModulusWidth;
+  // phase + S < 2M when not saturated, and S itself needs StepWidth bits.
+  localparam int SumWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
   localparam int PhaseWidth = SumWidth + 1;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
   // logic depends on an input combinationally). Valid from the first clock after reset,
   // long before the first block can load.
   logic [ModulusWidth-1:0] modulus_q;
-  // step_q: S = F << k of the playing block. phase_q: accumulated feed, always < M when
+  // step_q: S of the playing block. phase_q: accumulated feed, always < M when
   // not saturated. saturated_q: S >= M, one iteration per clock.
   logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
   logic                  saturated_q, saturated_d;
@@ -53,7 +50,7 @@ module feed_generator #(
     phase_d     = phase_q;
     saturated_d = saturated_q;
     if (load_i) begin
-      step_load   = PhaseWidth'(feed_i) << k_i;
+      step_load   = PhaseWidth'(step_i);
       step_d      = step_load;
       phase_d     = step_load;
       saturated_d = step_load >= modulus;

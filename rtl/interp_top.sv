@@ -1,7 +1,9 @@
-// Interpolator top: plays a punched tape of line blocks into step/dir pulses.
+// Interpolator top: plays a punched tape of line and quadrant arc blocks into step/dir
+// pulses.
 //
-// What: tape_decoder -> block_buffer ("next" block) -> player (feed_generator + dda_line)
-// -> position counters, plus the machine status. Ports and parameters are the contract
+// What: tape_decoder (with arc_prepare) -> block_buffer ("next" block) -> player
+// (feed_generator + dda_line for G01, dda_circle for G02/G03) -> position counters, plus
+// the machine status. Ports and parameters are the contract
 // of docs/architecture.md; the microarchitecture and the clock-by-clock timing are in
 // docs/interpolator.md, which the golden model (sc_model/golden/) follows too.
 // Timing: every output is a register or a function of registers (Moore). A block loads at
@@ -53,9 +55,11 @@ module interp_top #(
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
-  // A decoded block as the buffer stores it: N, motion, dx, dy, i, j (sign + magnitude), F,
-  // and the DDA's k.
-  localparam int BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + FeedWidth + KWidth;
+  // The feed step S = F * N of a block (N <= 2^(W+1) iterations).
+  localparam int StepWidth = FeedWidth + IncWidth + 1;
+  // A decoded block as the buffer stores it: N, motion, dx, dy, i, j (sign + magnitude), S,
+  // and the line DDA's k.
+  localparam int BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + StepWidth + KWidth;
 
   // Decoder -> buffer.
   logic                   dec_valid, buf_ready;
@@ -63,7 +67,7 @@ module interp_top #(
   logic [1:0]             dec_motion;
   logic [IncWidth-1:0]    dec_dx, dec_dy, dec_i, dec_j;
   logic                   dec_dx_neg, dec_dy_neg, dec_i_neg, dec_j_neg;
-  logic [FeedWidth-1:0]   dec_feed;
+  logic [StepWidth-1:0]   dec_step;
   logic [KWidth-1:0]      dec_k;
   logic                   dec_end, dec_tape_ended, dec_err;
   logic [3:0]             dec_err_code;
@@ -74,19 +78,34 @@ module interp_top #(
   logic                   next_valid;
   logic [BlockWidth-1:0]  next_block;
   logic [SeqWidth-1:0]    next_n;
-  logic [IncWidth-1:0]    next_dx, next_dy;
-  logic                   next_dx_neg, next_dy_neg;
-  logic [FeedWidth-1:0]   next_feed;
-  logic [KWidth-1:0]      next_k;
-  // Motion, I and J travel with the block for circle mode (next issue); lines ignore them.
-  /* verilator lint_off UNUSEDSIGNAL */
+  logic [IncWidth-1:0]    next_dx, next_dy, next_i, next_j;
+  logic                   next_dx_neg, next_dy_neg, next_i_neg, next_j_neg;
   logic [1:0]             next_motion;
-  logic [IncWidth-1:0]    next_i, next_j;
-  logic                   next_i_neg, next_j_neg;
+  logic [StepWidth-1:0]   next_step;
+  logic [KWidth-1:0]      next_k;
+  logic                   next_arc;
+
+  // The next arc's geometry for the circle DDA's load. The decoder has already checked the
+  // arc (arc_prepare), so the end point and the error outputs are not needed here.
+  logic [IncWidth-1:0]    arc_x0, arc_y0;
+  logic                   arc_grow_x, arc_grow_y;
+  logic [KWidth-1:0]      arc_k;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [IncWidth-1:0]    arc_x1, arc_y1;
+  logic                   arc_err;
+  logic [3:0]             arc_err_code;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // Player.
-  logic              load, strobe, rem_zero, saturated, carry_x, carry_y;
+  // Player: one DDA per motion; the idle one has no iterations left and emits nothing.
+  logic              load, strobe, finished, saturated;
+  logic              line_idle, line_carry_x, line_carry_y, line_step_x, line_step_y;
+  logic              line_dir_x, line_dir_y;
+  logic              circle_idle, circle_carry_x, circle_carry_y, circle_step_x, circle_step_y;
+  logic              circle_dir_x, circle_dir_y;
+  logic              carry_x, carry_y;
+  // arc_q: the playing (or last played) block is an arc: the dir outputs come from the
+  // circle DDA.
+  logic              arc_q, arc_d;
 
   // busy_q: a block is loaded and not finished. block_n_q: its N (the last one when idle).
   // done_q / error_q: the machine has stopped at the end of the program / on a tape error.
@@ -103,7 +122,7 @@ module interp_top #(
     .blk_n_o(dec_n), .blk_motion_o(dec_motion),
     .blk_dx_o(dec_dx), .blk_dx_neg_o(dec_dx_neg), .blk_dy_o(dec_dy), .blk_dy_neg_o(dec_dy_neg),
     .blk_i_o(dec_i), .blk_i_neg_o(dec_i_neg), .blk_j_o(dec_j), .blk_j_neg_o(dec_j_neg),
-    .blk_feed_o(dec_feed), .blk_k_o(dec_k),
+    .blk_step_o(dec_step), .blk_k_o(dec_k),
     .end_o(dec_end), .tape_ended_o(dec_tape_ended), .err_o(dec_err), .err_code_o(dec_err_code),
     .err_block_o(dec_err_block), .err_offset_o(dec_err_offset)
   );
@@ -112,35 +131,65 @@ module interp_top #(
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i({dec_n, dec_motion, dec_dx_neg, dec_dx, dec_dy_neg, dec_dy,
-                 dec_i_neg, dec_i, dec_j_neg, dec_j, dec_feed, dec_k}),
+                 dec_i_neg, dec_i, dec_j_neg, dec_j, dec_step, dec_k}),
     .pop_i(load),
     .out_valid_o(next_valid), .out_block_o(next_block)
   );
 
   assign {next_n, next_motion, next_dx_neg, next_dx, next_dy_neg, next_dy,
-          next_i_neg, next_i, next_j_neg, next_j, next_feed, next_k} = next_block;
+          next_i_neg, next_i, next_j_neg, next_j, next_step, next_k} = next_block;
+  assign next_arc = next_motion != 2'd1;
 
+  // The playing block's iterations are over when both DDAs are idle (only one was loaded).
+  assign finished = line_idle && circle_idle;
   // A block loads when one waits and the player is idle or finishing the previous block.
-  assign load = next_valid && (!busy_q || rem_zero);
+  assign load = next_valid && (!busy_q || finished);
 
-  feed_generator #(
-    .FeedWidth(FeedWidth), .IncWidth(IncWidth), .ModulusWidth(ModulusWidth), .KWidth(KWidth)
-  ) u_feed (
+  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth)) u_feed (
     .clk_i, .rst_ni,
-    .load_i(load), .feed_i(next_feed), .k_i(next_k),
-    .run_i(busy_q && !rem_zero), .modulus_i(feed_modulus_i),
+    .load_i(load), .step_i(next_step),
+    .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
   );
 
+  // Both DDAs see every strobe; an idle one ignores it.
   dda_line #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dda (
     .clk_i, .rst_ni,
-    .load_i(load), .k_i(next_k),
+    .load_i(load && !next_arc), .k_i(next_k),
     .dx_i(next_dx), .dx_neg_i(next_dx_neg), .dy_i(next_dy), .dy_neg_i(next_dy_neg),
     .strobe_i(strobe),
-    .carry_x_o(carry_x), .carry_y_o(carry_y),
-    .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
-    .rem_zero_o(rem_zero)
+    .carry_x_o(line_carry_x), .carry_y_o(line_carry_y),
+    .step_x_o(line_step_x), .dir_x_o(line_dir_x), .step_y_o(line_step_y), .dir_y_o(line_dir_y),
+    .rem_zero_o(line_idle)
   );
+
+  arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth)) u_arc_geometry (
+    .dx_i(next_dx), .dx_neg_i(next_dx_neg), .dy_i(next_dy), .dy_neg_i(next_dy_neg),
+    .i_i(next_i), .i_neg_i(next_i_neg), .j_i(next_j), .j_neg_i(next_j_neg),
+    .ccw_i(next_motion == 2'd3),
+    .x0_o(arc_x0), .y0_o(arc_y0), .x1_o(arc_x1), .y1_o(arc_y1),
+    .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y), .k_o(arc_k),
+    .error_o(arc_err), .error_code_o(arc_err_code)
+  );
+
+  dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_circle (
+    .clk_i, .rst_ni,
+    .load_i(load && next_arc), .k_i(arc_k), .x_i(arc_x0), .y_i(arc_y0),
+    .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(arc_grow_x), .grow_y_i(arc_grow_y),
+    .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
+    .strobe_i(strobe),
+    .carry_x_o(circle_carry_x), .carry_y_o(circle_carry_y),
+    .step_x_o(circle_step_x), .dir_x_o(circle_dir_x),
+    .step_y_o(circle_step_y), .dir_y_o(circle_dir_y),
+    .done_o(circle_idle)
+  );
+
+  assign carry_x  = line_carry_x | circle_carry_x;
+  assign carry_y  = line_carry_y | circle_carry_y;
+  assign step_x_o = line_step_x | circle_step_x;
+  assign step_y_o = line_step_y | circle_step_y;
+  assign dir_x_o  = arc_q ? circle_dir_x : line_dir_x;
+  assign dir_y_o  = arc_q ? circle_dir_y : line_dir_y;
 
   position_counter #(.PosWidth(PosWidth)) u_pos_x (
     .clk_i, .rst_ni, .count_i(carry_x), .up_i(dir_x_o), .pos_o(pos_x_o)
@@ -154,10 +203,12 @@ module interp_top #(
   always_comb begin
     busy_d    = busy_q;
     block_n_d = block_n_q;
+    arc_d     = arc_q;
     if (load) begin
       busy_d    = 1'b1;
       block_n_d = next_n;
-    end else if (busy_q && rem_zero) begin
+      arc_d     = next_arc;
+    end else if (busy_q && finished) begin
       busy_d = 1'b0;  // finished with no next block: a gap (or the end)
     end
     error_d = error_q | (dec_err & !busy_q & !next_valid);
@@ -168,11 +219,13 @@ module interp_top #(
     if (!rst_ni) begin
       busy_q    <= 1'b0;
       block_n_q <= '0;
+      arc_q     <= 1'b0;
       done_q    <= 1'b0;
       error_q   <= 1'b0;
     end else begin
       busy_q    <= busy_d;
       block_n_q <= block_n_d;
+      arc_q     <= arc_d;
       done_q    <= done_d;
       error_q   <= error_d;
     end

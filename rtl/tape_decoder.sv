@@ -3,17 +3,20 @@
 // What: takes one frame per clock over valid/ready, checks its parity, parses the words
 // N G M X Y I J F (strict number syntax, docs/interpolator.md section 3), assembles one
 // motion block and holds it (frame_ready_o low) until the block buffer takes it. G and F
-// are modal. The first bad frame stops the decoder with an error code, the bad block's N
+// are modal. An arc block (G02/G03) is first checked and dry-run by arc_prepare.sv, which
+// gives its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k. The first bad frame stops the decoder with an error code, the bad block's N
 // (or the previous one) and the frame's offset; the error is only reported by interp_top
 // once every good block has played.
 //
 // Timing: the reader's signals are registered first (so no logic depends on an input
 // combinationally): a frame taken at edge e (frame_valid_i & frame_ready_o) lands in the
 // input register and is processed at edge e+1, while the next frame may be taken. The LF
-// of a motion block puts the decoder in HOLD; the block buffer takes the block at the first
-// edge where it is empty (blk_ready_i). frame_ready_o is low while the input register is
-// full and cannot be processed at the next edge (HOLD), and after an error. tape_end_i
-// (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
+// of a line block puts the decoder in HOLD, the LF of an arc block in ARC until arc_prepare
+// is done (max(N, 2W + 3) clocks), then HOLD or ERROR; the block buffer takes a held block
+// at the first edge where it is empty (blk_ready_i). frame_ready_o is low while the input
+// register is full and cannot be processed at the next edge (ARC, HOLD), and after an
+// error. tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a
+// truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
   // Increment register width W: |X|, |Y|, |I|, |J| <= 2^IncWidth - 1 BLU.
@@ -48,8 +51,9 @@ module tape_decoder #(
   output logic                   blk_i_neg_o,
   output logic [IncWidth-1:0]    blk_j_o,
   output logic                   blk_j_neg_o,
-  output logic [FeedWidth-1:0]   blk_feed_o,
-  output logic [$clog2(IncWidth+1)-1:0] blk_k_o,  // the line DDA's k for this block
+  // The feed generator's step S: F << k for a line, F * N for an arc (N < 2^(W+1)).
+  output logic [FeedWidth+IncWidth:0]   blk_step_o,
+  output logic [$clog2(IncWidth+1)-1:0] blk_k_o,  // the line DDA's k (line blocks)
   // End of program decoded and its last block handed over; trailing frames are checked.
   output logic                   end_o,
   // The reader has delivered every frame (tape_end_i, registered).
@@ -73,6 +77,7 @@ module tape_decoder #(
   localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
   localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
   localparam int KWidth = $clog2(IncWidth + 1);
+  localparam int StepWidth = FeedWidth + IncWidth + 1;
   localparam logic [3:0] FracCount     = 4'(FracDigits);
   localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
 
@@ -115,7 +120,8 @@ module tape_decoder #(
     StComment = 3'd2,  // inside ( ... )
     StHold    = 3'd3,  // a decoded motion block waits for the block buffer
     StEnd     = 3'd4,  // after the end block: only % NUL CR LF space
-    StError   = 3'd5   // stopped on an error
+    StError   = 3'd5,  // stopped on an error
+    StArc     = 3'd6   // an arc block is checked and its iterations counted (arc_prepare)
   } state_e;
 
   typedef enum logic [3:0] {
@@ -148,7 +154,8 @@ module tape_decoder #(
   logic [OffsetWidth-1:0] word_offset_q, word_offset_d;
 
   // Block assembly. n_q is the last N read (never cleared: a block without N carries the
-  // previous one); motion_q and feed_q are modal (G01 and "no feed" after reset).
+  // previous one); motion_q (1 = G01, 2 = G02, 3 = G03) and feed_q are modal (G01 and
+  // "no feed" after reset).
   logic [SeqWidth-1:0]  n_q, n_d;
   logic [1:0]           motion_q, motion_d;
   logic [FeedWidth-1:0] feed_q, feed_d;
@@ -179,6 +186,10 @@ module tape_decoder #(
   logic                   signed_word, fractional_word, word_complete;
   logic [3:0]             frac_limit;
   logic [WideWidth-1:0]   limit, num_next;
+  // The arc block being prepared (StArc): result in the clock with arc_done.
+  logic                   arc_done, arc_err;
+  logic [3:0]             arc_code;
+  logic [StepWidth-1:0]   arc_step;
 
   // Bit length of a value (position of its highest 1 plus one; 0 for 0).
   function automatic logic [KWidth-1:0] bit_length(input logic [IncWidth-1:0] value);
@@ -188,7 +199,7 @@ module tape_decoder #(
     end
   endfunction
 
-  assign take = in_valid_q && state_q != StHold && state_q != StError;
+  assign take = in_valid_q && state_q != StHold && state_q != StArc && state_q != StError;
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !in_valid_q &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
@@ -300,12 +311,12 @@ module tape_decoder #(
                   unique case (word_q)
                     WordN: n_d = num_q[SeqWidth-1:0];
                     WordG: begin
-                      if (num_q == NumWidth'(1)) begin
-                        motion_d = 2'd1;
+                      if (num_q >= NumWidth'(1) && num_q <= NumWidth'(3)) begin
+                        motion_d = num_q[1:0];  // G01, G02, G03
                         motion_blk_d = 1'b1;
                       end else if (!(num_q == NumWidth'(17) || num_q == NumWidth'(21) ||
                                      num_q == NumWidth'(91) || num_q == NumWidth'(93))) begin
-                        word_ok = 1'b0;  // G02/G03 too, until circle mode
+                        word_ok = 1'b0;
                         fail_code = ErrUnsupported;
                       end
                     end
@@ -377,7 +388,9 @@ module tape_decoder #(
                       fail = 1'b1;
                       fail_code = ErrMissingFeed;
                     end else begin
-                      state_d = StHold;  // cleared at the handoff
+                      // A line waits for the buffer (cleared at the handoff); an arc is
+                      // prepared first.
+                      state_d = motion_d == 2'd1 ? StHold : StArc;
                       k_d = bit_length(dx_d | dy_d);
                     end
                   end else begin
@@ -398,8 +411,18 @@ module tape_decoder #(
               end
             end
           end
-          default: ;  // StHold, StError: no frame is processed
+          default: ;  // StHold, StArc, StError: no frame is processed
         endcase
+      end
+    end else if (state_q == StArc) begin
+      if (arc_done) begin
+        if (arc_err) begin
+          fail = 1'b1;
+          fail_code = arc_code;
+          fail_offset = frame_count_q - 1'b1;  // the block's LF, the last frame processed
+        end else begin
+          state_d = StHold;
+        end
       end
     end else if (state_q == StHold) begin
       if (blk_ready_i) begin
@@ -432,13 +455,25 @@ module tape_decoder #(
       in_frame_d = frame_i;
       in_valid_d = 1'b1;
     end
-    ready_d = state_d != StError && !(state_d == StHold && in_valid_d);
+    ready_d = state_d != StError && !((state_d == StHold || state_d == StArc) && in_valid_d);
   end
 
-  // The parser's registers change only when a frame is processed, a held block is handed
-  // over or the tape has ended (update); the input register changes every clock.
+  // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N and
+  // sums S = F * N. Its result stays in its registers until the next arc starts, i.e. for
+  // the whole HOLD that follows.
+  arc_prepare #(.IncWidth(IncWidth), .FeedWidth(FeedWidth), .KWidth(KWidth)) u_arc (
+    .clk_i, .rst_ni, .run_i(state_q == StArc),
+    .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
+    .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
+    .ccw_i(motion_q == 2'd3), .feed_i(feed_q),
+    .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .step_o(arc_step)
+  );
+
+  // The parser's registers change only when a frame is processed, an arc is prepared, a
+  // held block is handed over or the tape has ended (update); the input register changes
+  // every clock.
   logic update;
-  assign update = take || state_q == StHold || tape_cut;
+  assign update = take || state_q == StArc || state_q == StHold || tape_cut;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -514,7 +549,7 @@ module tape_decoder #(
   assign blk_i_neg_o   = i_neg_q;
   assign blk_j_o       = j_q;
   assign blk_j_neg_o   = j_neg_q;
-  assign blk_feed_o    = feed_q;
+  assign blk_step_o    = motion_q == 2'd1 ? StepWidth'(feed_q) << k_q : arc_step;
   assign blk_k_o       = k_q;
   assign end_o         = state_q == StEnd;
   assign tape_ended_o  = tape_end_q;

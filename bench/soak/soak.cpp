@@ -23,7 +23,7 @@ struct Args {
   std::string engine = "golden";
   double seconds = 0.5;
   std::string dump;
-  bool arcs = false;
+  bool no_arcs = false;
 };
 
 std::string tape_command(const regression::Case& c, const std::string& input) {
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--seconds", a.seconds, "machine time of each contour (sets the feed)")->capture_default_str();
   app.add_option("--dump", a.dump, "directory for failing cases (input, tape, report, commands)");
-  app.add_flag("--arcs", a.arcs, "also cut arcs as G02/G03 blocks (--arcs circle) when the interpolator plays them");
+  app.add_flag("--no-arcs", a.no_arcs, "never cut arcs as G02/G03 blocks (--arcs circle); by default half the contours with arcs are");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<checker::EngineKind> engines;
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   if (a.engine != "golden") engines.push_back(checker::EngineKind::kRtl);
   regression::RandomCaseLimits limits;
   limits.seconds = a.seconds;
-  limits.arcs_circle_allowed = a.arcs;
+  limits.arcs_circle_allowed = !a.no_arcs;
 
   const auto t0 = std::chrono::steady_clock::now();
   uint64_t failures = 0, clocks = 0, runs = 0, skipped = 0;

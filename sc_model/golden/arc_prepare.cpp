@@ -6,16 +6,19 @@ namespace ncinterp {
 
 namespace {
 
-uint64_t low_mask(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
+using u128 = unsigned __int128;
 
-uint64_t bit(uint64_t v, unsigned b) { return (v >> b) & 1u; }
+u128 low_mask(unsigned bits) { return (u128{1} << bits) - 1; }
+
+unsigned bit(u128 v, unsigned b) { return static_cast<unsigned>(v >> b) & 1u; }
+
+constexpr uint64_t kStepClamp = uint64_t{1} << 63;
 
 }  // namespace
 
-ArcPrepare::ArcPrepare(unsigned inc_width, unsigned feed_width)
+ArcPrepare::ArcPrepare(unsigned inc_width)
     : inc_width_(inc_width),
-      check_steps_(2 * inc_width + 3),
-      step_mask_(low_mask(feed_width + inc_width + 1)) {
+      check_steps_(2 * inc_width + 3) {
   reset();
 }
 
@@ -56,7 +59,7 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
   }
   if (!dry_.done()) {
     dry_.iterate();
-    step_ = (step_ + feed) & step_mask_;
+    step_ = step_ + feed < kStepClamp ? step_ + feed : kStepClamp;  // feed < 2^63: no wrap
   }
   if (!check_done) check_step(g);
   return r;
@@ -69,9 +72,8 @@ void ArcPrepare::check_step(const ArcGeometry& g) {
     a_ = 2 * a_ + bit(g.x0, b) * g.x0 + bit(g.y0, b) * g.y0;
     sq_ = 2 * sq_ + bit(g.x1, b) * g.x1 + bit(g.y1, b) * g.y1;
   } else if (count_ == w) {
-    const int64_t e = static_cast<int64_t>(sq_) - static_cast<int64_t>(a_) - 1;
-    const uint64_t mag = static_cast<uint64_t>(e < 0 ? -e : e);
-    far_ = mag >= (uint64_t{1} << (w + 2));
+    const u128 mag = sq_ >= a_ + 1 ? sq_ - a_ - 1 : a_ + 1 - sq_;  // |B - A - 1|
+    far_ = mag >= (u128{1} << (w + 2));
     e_ = mag & low_mask(w + 2);
     sq_ = 0;
   } else {

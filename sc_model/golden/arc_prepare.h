@@ -19,7 +19,7 @@ namespace ncinterp {
 
 class ArcPrepare {
  public:
-  ArcPrepare(unsigned inc_width, unsigned feed_width);
+  explicit ArcPrepare(unsigned inc_width);
 
   void reset();
 
@@ -36,7 +36,9 @@ class ArcPrepare {
   // One clock edge with run_i = 0.
   void idle() { running_ = false; }
 
-  // S = F * N of the prepared block (valid after a done without error).
+  // S = F * N of the prepared block (valid after a done without error), clamped at 2^63:
+  // the RTL's step register is FeedWidth + W + 1 bits wide and never wraps, and a step that
+  // large saturates any feed modulus (M < 2^62), so the clamp is never observable.
   uint64_t step() const { return step_; }
   // Clocks of the radius check after the start edge (2W + 3).
   unsigned check_steps() const { return check_steps_; }
@@ -46,15 +48,15 @@ class ArcPrepare {
 
   unsigned inc_width_;
   unsigned check_steps_;
-  uint64_t step_mask_;
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   CircleDda dry_;           // the dry-run DDA
   uint64_t step_ = 0;       // F added once per dry-run iteration: F * N
   // Bit-serial radius check: count_ steps done; a_ = x0^2 + y0^2; sq_ = x1^2 + y1^2,
-  // then |E|^2 with E = B - A - 1; e_ = |E| (W + 2 bits); far_ = |E| >= 2^(W+2).
+  // then |E|^2 with E = B - A - 1; e_ = |E| (W + 2 bits); far_ = |E| >= 2^(W+2). 128 bits:
+  // the squares of W = 32 magnitudes need 65 bits, |E|^2 up to 68.
   unsigned count_ = 0;
-  uint64_t a_ = 0, sq_ = 0, e_ = 0;
+  unsigned __int128 a_ = 0, sq_ = 0, e_ = 0;
   bool far_ = false;
 };
 

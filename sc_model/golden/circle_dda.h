@@ -26,10 +26,10 @@ class CircleDda {
 
   // Registers after a load edge.
   void load(const ArcGeometry& g, bool dir_x, bool dir_y) {
-    kpow_ = uint32_t{1} << g.k;
+    kpow_ = uint64_t{1} << g.k;
     acc_[0] = acc_[1] = kpow_ >> 1;
-    mag_[0] = static_cast<uint32_t>(g.x0);
-    mag_[1] = static_cast<uint32_t>(g.y0);
+    mag_[0] = g.x0;
+    mag_[1] = g.y0;
     cnt_[0] = g.cnt_x;
     cnt_[1] = g.cnt_y;
     grow_[0] = g.grow_x;
@@ -55,19 +55,19 @@ class CircleDda {
   bool dir(int axis) const { return dir_[axis]; }
 
   // Register access for tests, the bench and the golden model's fault hook.
-  uint32_t kpow() const { return kpow_; }
-  uint32_t acc(int axis) const { return acc_[axis]; }
-  uint32_t mag(int axis) const { return mag_[axis]; }
+  uint64_t kpow() const { return kpow_; }
+  uint64_t acc(int axis) const { return acc_[axis]; }
+  uint64_t mag(int axis) const { return mag_[axis]; }
   uint32_t count(int axis) const { return cnt_[axis]; }
   bool y_first() const { return y_first_; }
-  void add_to_integrator(int axis, uint32_t v) { acc_[axis] += v; }
+  void add_to_integrator(int axis, uint64_t v) { acc_[axis] += v; }
 
  private:
   // Axis a integrates the other axis's magnitude; a carry out of bit k is a step.
   bool half_step(int a) {
     const int b = 1 - a;
-    const uint32_t addend = cnt_[b] == 0 ? (mag_[b] | (kpow_ >> 1)) : mag_[b];
-    const uint32_t sum = acc_[a] + addend;  // < 2^(k+1)
+    const uint64_t addend = cnt_[b] == 0 ? (mag_[b] | (kpow_ >> 1)) : mag_[b];
+    const uint64_t sum = acc_[a] + addend;  // < 2^(k+1)
     acc_[a] = sum & ~kpow_;
     const bool step = (sum & kpow_) != 0 && cnt_[a] != 0;
     if (step) {
@@ -77,9 +77,10 @@ class CircleDda {
     return step;
   }
 
-  uint32_t kpow_ = 0;           // 2^k, one-hot
-  uint32_t acc_[2] = {0, 0};    // integrators, in [0, 2^k)
-  uint32_t mag_[2] = {0, 0};    // |x|, |y| relative to the centre
+  // 64 bits: k goes up to W = 32, so 2^k and acc + addend need W + 1 bits.
+  uint64_t kpow_ = 0;           // 2^k, one-hot
+  uint64_t acc_[2] = {0, 0};    // integrators, in [0, 2^k)
+  uint64_t mag_[2] = {0, 0};    // |x|, |y| relative to the centre
   uint32_t cnt_[2] = {0, 0};    // pulses left per axis
   bool grow_[2] = {false, false};
   bool dir_[2] = {false, false};  // 1 = plus, held for the block

@@ -18,7 +18,8 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
       inc_limit_(low_mask(cfg.inc_width)),
       feed_limit_(low_mask(cfg.feed_width)),
       seq_limit_(low_mask(cfg.seq_width)),
-      offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))) {}
+      offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
+      arc_(cfg.inc_width) {}
 
 void GoldenTapeDecoder::reset() {
   state_ = State::kLeader;
@@ -37,15 +38,19 @@ void GoldenTapeDecoder::reset() {
   block_.motion = 1;
   block_.feed = 0;
   clear_block();
+  arc_.reset();
   err_code_ = TapeError::kNone;
   err_block_ = 0;
   err_offset_ = 0;
 }
 
 void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
-  const bool process = in_valid_ && state_ != State::kHold && state_ != State::kError;
+  const bool process = in_valid_ && state_ != State::kHold && state_ != State::kArc &&
+                       state_ != State::kError;
   if (process) {
     process_frame(in_frame_);
+  } else if (state_ == State::kArc) {
+    arc_edge();
   } else if (state_ == State::kHold) {
     if (buffer_empty) handoff();
   } else if (tape_end_q_ && !in_valid_ && state_ <= State::kComment) {
@@ -58,7 +63,19 @@ void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
     in_valid_ = true;
   }
   tape_end_q_ = in.tape_end;
-  ready_ = state_ != State::kError && !(state_ == State::kHold && in_valid_);
+  ready_ = state_ != State::kError &&
+           !((state_ == State::kHold || state_ == State::kArc) && in_valid_);
+}
+
+void GoldenTapeDecoder::arc_edge() {
+  const ArcPrepare::Result r = arc_.edge(block_.arc_words(), block_.feed);
+  if (!r.done) return;
+  if (r.error != TapeError::kNone) {
+    fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read
+  } else {
+    block_.step = arc_.step();
+    state_ = State::kHold;
+  }
 }
 
 void GoldenTapeDecoder::process_frame(uint8_t frame) {
@@ -80,6 +97,7 @@ void GoldenTapeDecoder::process_frame(uint8_t frame) {
     case State::kBody:
       return body_character(c, offset);
     case State::kHold:
+    case State::kArc:
     case State::kError:
       return;  // edge() does not process a frame in these states
   }
@@ -182,11 +200,11 @@ bool GoldenTapeDecoder::finish_word() {
   switch (w) {
     case Word::kN: block_.n = value32; break;
     case Word::kG:
-      if (num_ == 1) {
-        block_.motion = 1;
+      if (num_ >= 1 && num_ <= 3) {
+        block_.motion = static_cast<uint8_t>(num_);  // G01, G02, G03
         motion_block_ = true;
       } else if (!(num_ == 17 || num_ == 21 || num_ == 91 || num_ == 93)) {
-        fail(TapeError::kUnsupportedCode, word_offset_);  // G02/G03 too, until circle mode
+        fail(TapeError::kUnsupportedCode, word_offset_);
         return false;
       }
       break;
@@ -210,7 +228,16 @@ bool GoldenTapeDecoder::finish_word() {
 void GoldenTapeDecoder::end_of_block(uint32_t offset) {
   if (motion_block_) {
     if (block_.feed == 0) return fail(TapeError::kMissingFeed, offset);
-    state_ = State::kHold;  // the block buffer takes it; cleared at the handoff
+    if (block_.is_arc()) {
+      state_ = State::kArc;  // checked and dry-run first; S = F * N comes from that
+    } else {
+      // The block buffer takes it; cleared at the handoff. S = F << k, k = bit length of
+      // max(|dx|, |dy|) (the RTL's decoder computes k at the LF, S at the handoff).
+      const uint32_t d = block_.dx | block_.dy;
+      const unsigned k = d == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(d));
+      block_.step = block_.feed << k;
+      state_ = State::kHold;
+    }
     return;
   }
   if (end_block_) state_ = State::kEnd;

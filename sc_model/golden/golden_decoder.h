@@ -1,11 +1,14 @@
 // Tape decoder of the golden model: the C++ twin of rtl/tape_decoder.sv.
 // Idea: frames -> words -> one decoded motion block at a time, with the same registers and
 // the same next-state rules as the RTL (docs/interpolator.md, section 3), including the
-// input register in front of the parser. edge() is called only on clocks where something
-// happens (quiet() is false), so the decoder stays off the golden model's hot path.
+// input register in front of the parser. An arc block is checked and dry-run by ArcPrepare
+// (the twin of rtl/arc_prepare.sv) before it is held. edge() is called only on clocks where
+// something happens (quiet() is false), so the decoder stays off the golden model's hot
+// path.
 #pragma once
 #include <cstdint>
 
+#include "arc_prepare.h"
 #include "interp_ports.h"
 
 namespace ncinterp {
@@ -18,20 +21,28 @@ struct DecodedBlock {
   uint32_t dx = 0, dy = 0, i = 0, j = 0;
   bool dx_neg = false, dy_neg = false, i_neg = false, j_neg = false;
   uint64_t feed = 0;
+  // The feed generator's step S = F * N (N iterations: 2^k for a line, the circle DDA's
+  // count for an arc); set when the block is held.
+  uint64_t step = 0;
+
+  bool is_arc() const { return motion != 1; }
+  ArcWords arc_words() const {
+    return ArcWords{dx, dy, i, j, dx_neg, dy_neg, i_neg, j_neg, motion == 3};
+  }
 };
 
 class GoldenTapeDecoder {
  public:
   // Order matters: the states up to kComment watch tape_end (truncated tape).
-  enum class State : uint8_t { kLeader, kBody, kComment, kHold, kEnd, kError };
+  enum class State : uint8_t { kLeader, kBody, kComment, kHold, kArc, kEnd, kError };
 
   explicit GoldenTapeDecoder(const InterpConfig& cfg);
 
   void reset();
-  // Nothing would change at this edge: no frame offered or waiting, no block held, and
-  // tape_end neither changing nor ending the tape early.
+  // Nothing would change at this edge: no frame offered or waiting, no block prepared or
+  // held, and tape_end neither changing nor ending the tape early.
   bool quiet(const InterpInputs& in) const {
-    return !in.frame_valid && !in_valid_ && state_ != State::kHold &&
+    return !in.frame_valid && !in_valid_ && state_ != State::kHold && state_ != State::kArc &&
            in.tape_end == tape_end_q_ && !(tape_end_q_ && state_ <= State::kComment);
   }
   // One rising edge. buffer_empty: the block buffer can take a held block at this edge
@@ -51,6 +62,7 @@ class GoldenTapeDecoder {
   enum class Num : uint8_t { kStart, kSigned, kInt, kFrac };
 
   void process_frame(uint8_t frame);
+  void arc_edge();
   void handoff();
   void body_character(char c, uint32_t offset);
   void digit(unsigned d, uint32_t offset);
@@ -86,6 +98,8 @@ class GoldenTapeDecoder {
   // Block assembly (n, motion and feed are modal: never cleared at a block start).
   DecodedBlock block_;
   bool n_seen_ = false, any_word_ = false, motion_block_ = false, end_block_ = false;
+  // The arc block being prepared (kArc).
+  ArcPrepare arc_;
   // Error capture.
   TapeError err_code_ = TapeError::kNone;
   uint32_t err_block_ = 0;

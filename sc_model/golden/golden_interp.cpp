@@ -20,8 +20,10 @@ void require(bool ok, const char* what) {
 }  // namespace
 
 GoldenInterp::GoldenInterp(const InterpConfig& cfg) : cfg_(cfg), decoder_(cfg) {
-  // |dx|, |dy| are held in 32 bits; F << k (FeedWidth + IncWidth bits) in 64. The phase
-  // sum is formed only when not saturated (S < M < 2^62), so it cannot overflow.
+  // The phase sum is formed only when not saturated (S < M < 2^62), so it cannot overflow.
+  // |dx|, |dy| are held in 32 bits; a line's S = F << k (FeedWidth + IncWidth bits) in 64.
+  // An arc's S = F * N may need one bit more: ArcPrepare keeps it exact below 2^63 and
+  // clamps it there, which only matters as "saturated" (S >= M, and M < 2^62).
   require(cfg.inc_width >= 1 && cfg.inc_width <= 32, "inc_width must be 1..32");
   require(cfg.feed_width >= 1 && cfg.feed_width + cfg.inc_width <= 64,
           "feed_width + inc_width must be <= 64");
@@ -45,6 +47,8 @@ void GoldenInterp::reset() {
   kpow_ = rem_ = 0;
   acc_[0] = acc_[1] = inc_[0] = inc_[1] = 0;
   dir_[0] = dir_[1] = false;
+  arc_ = false;
+  circle_ = CircleDda{};
   out_ = InterpOutputs{};
   out_.frame_ready = decoder_.ready();
   cycle_ = 0;
@@ -55,16 +59,21 @@ void GoldenInterp::reset() {
 
 void GoldenInterp::load_block() {
   const DecodedBlock& b = next_;
-  // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
-  const unsigned k = bit_length(b.dx | b.dy);
-  kpow_ = uint64_t{1} << k;
-  rem_ = kpow_;
-  acc_[0] = acc_[1] = kpow_ >> 1;
-  inc_[0] = b.dx;
-  inc_[1] = b.dy;
+  arc_ = b.is_arc();
+  if (arc_) {
+    // The decoder has checked the arc; the geometry gives the circle DDA's start.
+    circle_.load(arc_geometry(b.arc_words(), cfg_.inc_width), !b.dx_neg, !b.dy_neg);
+  } else {
+    // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
+    kpow_ = uint64_t{1} << bit_length(b.dx | b.dy);
+    rem_ = kpow_;
+    acc_[0] = acc_[1] = kpow_ >> 1;
+    inc_[0] = b.dx;
+    inc_[1] = b.dy;
+  }
   dir_[0] = !b.dx_neg;
   dir_[1] = !b.dy_neg;
-  feed_step_ = b.feed << k;
+  feed_step_ = b.step;
   phase_ = feed_step_;
   saturated_ = feed_step_ >= modulus_;
   next_valid_ = false;
@@ -140,7 +149,8 @@ void GoldenInterp::fault_edge() {
         break;
       case Fault::kAccumulatorOffByOne:
         if (!out_.busy) break;
-        acc_[a] += 1;
+        if (arc_) circle_.add_to_integrator(a, 1);
+        else acc_[a] += 1;
         again = false;
         break;
       case Fault::kWrongDirection:

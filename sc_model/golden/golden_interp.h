@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "circle_dda.h"
 #include "golden_decoder.h"
 #include "interp_ports.h"
 
@@ -62,8 +63,8 @@ class GoldenInterp {
   // Block buffer ("next" register).
   DecodedBlock next_;
   bool next_valid_ = false;
-  // Player: feed generator and line DDA.
-  uint64_t feed_step_ = 0;  // F << k
+  // Player: feed generator, line DDA and circle DDA (arc_: the block is an arc).
+  uint64_t feed_step_ = 0;  // S = F * N
   uint64_t phase_ = 0;
   bool saturated_ = false;
   // 64 bits: k goes up to IncWidth = 32, so 2^k and acc + inc need IncWidth + 1 bits.
@@ -72,6 +73,8 @@ class GoldenInterp {
   uint64_t acc_[2] = {0, 0};
   uint64_t inc_[2] = {0, 0};
   bool dir_[2] = {false, false};
+  bool arc_ = false;
+  CircleDda circle_;
   // Outputs: the output registers themselves.
   InterpOutputs out_;
 
@@ -91,7 +94,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   // values): they are taken first, then the player, the buffer and the decoder update.
   using State = GoldenTapeDecoder::State;
   const bool busy = out_.busy;
-  const bool finishing = busy && rem_ == 0;
+  const bool finishing = busy && rem_ == 0 && circle_.done();  // the idle DDA is done too
   const bool buffer_empty = !next_valid_;
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
@@ -109,17 +112,22 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
       phase_ = strobe ? p - modulus_ : p;
     }
     if (strobe) {
-      --rem_;
-      for (int a = 0; a < 2; ++a) {
-        const uint64_t sum = acc_[a] + inc_[a];
-        const bool carry = (sum & kpow_) != 0;
-        acc_[a] = sum & ~kpow_;
-        if (carry) {
-          int64_t& pos = a == 0 ? out_.pos_x : out_.pos_y;
-          pos = wrap_position(pos + (dir_[a] ? 1 : -1));
-          (a == 0 ? out_.step_x : out_.step_y) = true;
+      bool carry[2];
+      if (arc_) {
+        const CircleDda::Steps s = circle_.iterate();
+        carry[0] = s.x, carry[1] = s.y;
+      } else {
+        --rem_;
+        for (int a = 0; a < 2; ++a) {
+          const uint64_t sum = acc_[a] + inc_[a];
+          carry[a] = (sum & kpow_) != 0;
+          acc_[a] = sum & ~kpow_;
         }
       }
+      if (carry[0]) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
+      if (carry[1]) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));
+      out_.step_x = carry[0];
+      out_.step_y = carry[1];
     }
   } else if (finishing && !load) {
     out_.busy = false;

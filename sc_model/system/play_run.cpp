@@ -26,7 +26,6 @@ tape::Format tape_format_for(const InterpConfig& cfg) {
   f.inc_width = cfg.inc_width;
   f.feed_width = cfg.feed_width;
   f.seq_width = cfg.seq_width;
-  f.arcs = false;  // the interpolator has no circle mode yet: G02/G03 are error 6
   return f;
 }
 
@@ -34,12 +33,19 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
                          const InterpConfig& cfg) {
   uint64_t total = static_cast<uint64_t>(frames) * cycles_per_frame;
   for (const tape::Block& b : program.blocks) {
-    const uint64_t m = static_cast<uint64_t>(std::max(std::llabs(b.dx), std::llabs(b.dy)));
+    // Iterations: 2^k for a line; fewer than 2^(k+1) for an arc, whose k is that of its
+    // largest coordinate about the centre (<= |I| + |X|, |J| + |Y|), and whose preparation
+    // in the decoder takes max(N, 2W + 3) clocks (docs/circle-dda.md).
+    const bool arc = b.motion != tape::Motion::kLine;
+    const uint64_t m = static_cast<uint64_t>(
+        arc ? std::max(std::llabs(b.i) + std::llabs(b.dx), std::llabs(b.j) + std::llabs(b.dy))
+            : std::max(std::llabs(b.dx), std::llabs(b.dy)));
     unsigned k = 0;
-    while (k < 64 && (m >> k) != 0) ++k;
-    const uint64_t saturated = (k < 63 ? (1ull << k) : 0) + 1;
+    while (k < 62 && (m >> k) != 0) ++k;
+    const uint64_t iterations = arc ? 2ull << k : 1ull << k;
+    const uint64_t prepare = arc ? iterations + 2 * cfg.inc_width + 3 : 0;
     const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
-    total += std::max(saturated, programmed) + 3;
+    total += std::max(iterations + 1, programmed) + prepare + 3;
   }
   return 2 * total + 100000;
 }

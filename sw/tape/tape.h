@@ -30,9 +30,6 @@ struct Format {
   // Added after v1's first draft; the defaults are the interpolator's (InterpConfig).
   unsigned feed_width = 32;       // F <= 2^feed_width - 1
   unsigned seq_width = 20;        // N <= 2^seq_width - 1
-  // G02/G03 accepted (circle mode). false = the reader rejects them as an unsupported
-  // code (error 6), as an interpolator without circle mode does.
-  bool arcs = true;
 };
 
 struct Program {

@@ -2,10 +2,13 @@
 // Idea: a frame-by-frame state machine over the same states as the decoder
 // (docs/interpolator.md section 3: LEADER, BODY, COMMENT, END), with the same priorities
 // inside one frame (parity, then the word the frame ends, then the frame's own character)
-// and the same error codes, blocks and offsets. Written independently of the golden
-// decoder (sc_model/golden/golden_decoder.cpp); tests/sw/tape cross-checks the two on
-// thousands of damaged tapes, so a tape this reader accepts is a tape the machine plays.
+// and the same error codes, blocks and offsets; arc blocks are checked at their LF like the
+// decoder's arc preparation does (docs/circle-dda.md section 2). Written independently of
+// the golden decoder (sc_model/golden/golden_decoder.cpp, arc_geometry.cpp); tests/sw/tape
+// cross-checks the two on thousands of damaged tapes, so a tape this reader accepts is a
+// tape the machine plays.
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -26,7 +29,38 @@ enum Code : unsigned {
   kTruncatedTape = 7,
   kBlockAfterEnd = 8,
   kMissingFeed = 9,
+  kArcCrossesQuadrant = 10,
+  kArcEndpointOffCircle = 11,
+  kArcZeroRadius = 12,
 };
+
+// An arc block's checks in the decoder's order; 0 for a good arc. Coordinates relative to
+// the centre: start (-I, -J), end (X - I, Y - J).
+unsigned arc_error(const Block& b, uint64_t inc_max) {
+  if (b.i == 0 && b.j == 0) return kArcZeroRadius;
+  const int64_t x0 = -b.i, y0 = -b.j, x1 = x0 + b.dx, y1 = y0 + b.dy;
+  const bool ccw = b.motion == Motion::kArcCcw;
+  // Inside one closed quadrant (sx, sy): both ends in it, and each coordinate moves the way
+  // the direction goes there (counter-clockwise: x towards -sy, y towards +sx).
+  bool inside = false;
+  for (int sx : {1, -1})
+    for (int sy : {1, -1}) {
+      const bool ends = sx * x0 >= 0 && sx * x1 >= 0 && sy * y0 >= 0 && sy * y1 >= 0;
+      const int turn = ccw ? 1 : -1;
+      const bool moves = turn * sy * b.dx <= 0 && turn * sx * b.dy >= 0;
+      inside = inside || (ends && moves);
+    }
+  if (!inside || (b.dx == 0 && b.dy == 0)) return kArcCrossesQuadrant;
+  if (static_cast<uint64_t>(std::llabs(x1)) > inc_max || static_cast<uint64_t>(std::llabs(y1)) > inc_max)
+    return kValueTooWide;
+  // |R1 - R0| <= 1 exactly: with A = R0^2, B = R1^2, (B - A - 1)^2 <= 4A. |B - A - 1| beyond
+  // 2^40 fails anyway (4A < 2^67) and keeps the square inside 128 bits.
+  const __int128 a = __int128{x0} * x0 + __int128{y0} * y0;
+  const __int128 e = __int128{x1} * x1 + __int128{y1} * y1 - a - 1;
+  const __int128 mag = e < 0 ? -e : e;
+  if (mag > (__int128{1} << 40) || mag * mag > 4 * a) return kArcEndpointOffCircle;
+  return 0;
+}
 
 uint64_t max_for_width(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
 
@@ -220,11 +254,8 @@ class Reader {
   void g_code() {
     switch (value_) {
       case 1: motion_ = Motion::kLine; break;
-      case 2:
-      case 3:
-        if (!format_.arcs) unsupported("G");
-        motion_ = value_ == 2 ? Motion::kArcCw : Motion::kArcCcw;
-        break;
+      case 2: motion_ = Motion::kArcCw; break;
+      case 3: motion_ = Motion::kArcCcw; break;
       case 17: case 21: case 91: case 93: return;  // XY plane, mm, incremental, inverse time
       default: unsupported("G");
     }
@@ -243,6 +274,7 @@ class Reader {
       block_.n = n_;
       block_.motion = motion_;
       block_.feed = feed_;
+      if (motion_ != Motion::kLine) check_arc();
       program_.blocks.push_back(block_);
     }
     if (end_in_block_) {
@@ -251,6 +283,21 @@ class Reader {
     }
     block_ = Block{};
     n_in_block_ = block_has_word_ = motion_in_block_ = end_in_block_ = false;
+  }
+
+  void check_arc() {
+    switch (arc_error(block_, inc_max_)) {
+      case kArcZeroRadius: fail(kArcZeroRadius, offset_, "arc with zero radius: I and J are 0");
+      case kArcCrossesQuadrant:
+        fail(kArcCrossesQuadrant, offset_, "arc not inside one quadrant about its centre");
+      case kValueTooWide:
+        fail(kValueTooWide, offset_,
+             "value too wide for its register: the arc's end about its centre exceeds " +
+                 std::to_string(inc_max_));
+      case kArcEndpointOffCircle:
+        fail(kArcEndpointOffCircle, offset_, "arc endpoint more than 1 BLU off its circle");
+      default: break;
+    }
   }
 
   const Format& format_;

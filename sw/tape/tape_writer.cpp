@@ -46,8 +46,6 @@ void check_block(const Block& b, const Format& f) {
   check_inc(b.j, "J");
   if (b.motion == Motion::kLine && (b.i != 0 || b.j != 0))
     throw std::invalid_argument(where + "a line block has I/J");
-  if (b.motion != Motion::kLine && !f.arcs)
-    throw std::invalid_argument(where + "arc block but the format has no circle mode");
   if (b.feed == 0) throw std::invalid_argument(where + "feed F is 0");
   if (b.feed > max_for_width(f.feed_width))
     throw std::invalid_argument(where + "feed exceeds the F register");

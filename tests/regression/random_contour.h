@@ -34,7 +34,7 @@ GeneratedInput random_input(ShapeKind kind, std::mt19937_64& rng);
 // Options a soak case varies: chord method, tolerance, register width, cutter offset (on
 // shapes without arcs as arc blocks), and a feed giving about `seconds` of machine time.
 struct RandomCaseLimits {
-  bool arcs_circle_allowed = false;  // the interpolator plays G02/G03
+  bool arcs_circle_allowed = true;   // contours with arcs may be cut with G02/G03 blocks
   bool cutter_allowed = true;
   double seconds = 0.5;              // machine time of the whole contour, about
 };

@@ -127,7 +127,7 @@ TEST(ArcGeometry, LoadsMagnitudesGrowthCountsAndModulus) {
 // The decoder's arc preparation: same verdict as check_arc(), S = F * N with N the golden
 // DDA's iteration count, and done in the clock after max(N, 2W + 3) run edges.
 void expect_prepare(const QuadrantArc& a, unsigned w, uint64_t feed) {
-  ArcPrepare prep(w, 32);
+  ArcPrepare prep(w);
   const ArcWords words = a.words();
   const TapeError want = check_arc(words, w);
   const ArcGeometry g = arc_geometry(words, w);

@@ -150,7 +150,7 @@ TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW16) {
   auto ctx = std::make_unique<VerilatedContext>();
   Varc_prepare m(ctx.get());
   reset(m);
-  ArcPrepare golden(16, 32);
+  ArcPrepare golden(16);
   std::mt19937_64 rng(4);
   int good = 0;
   for (int t = 0; t < 300; ++t) {
@@ -169,7 +169,7 @@ TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW6) {
   auto ctx = std::make_unique<VerilatedContext>();
   Varc_prepare_w6 m(ctx.get());
   reset(m);
-  ArcPrepare golden(6, 12);
+  ArcPrepare golden(6);
   std::mt19937_64 rng(6);
   int codes[16] = {0};
   for (int t = 0; t < 20000; ++t) {

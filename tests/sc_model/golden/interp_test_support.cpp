@@ -163,8 +163,10 @@ std::vector<BadTape> bad_tapes() {
   t.push_back({"late_sign", s, TapeError::kMalformedNumber, 20, at(s, "-."), good});
   s = head + "N20 G90 X1.000\nM02\n%\n";
   t.push_back({"g90", s, TapeError::kUnsupportedCode, 20, at(s, "G90"), good});
-  s = head + "N20 G02 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
-  t.push_back({"g02_until_circle_mode", s, TapeError::kUnsupportedCode, 20, at(s, "G02"), good});
+  s = head + "N20 G04 X1.000\nM02\n%\n";
+  t.push_back({"g04", s, TapeError::kUnsupportedCode, 20, at(s, "G04"), good});
+  s = head + "N20 G03 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
+  t.push_back({"arc_leaves_its_quadrant", s, TapeError::kArcCrossesQuadrant, 20, at(s, "\n", at(s, "N20")), good});
   s = head + "N20 M00\nM02\n%\n";
   t.push_back({"m00", s, TapeError::kUnsupportedCode, 20, at(s, "M00"), good});
   s = head + "N1048576 X0.001\nM02\n%\n";

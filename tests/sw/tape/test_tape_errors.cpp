@@ -111,19 +111,30 @@ TEST(TapeErrors, ParityErrorAnywhere) {
   }
 }
 
-TEST(TapeErrors, ArcsRejectedWithoutCircleMode) {
-  const std::string text = kHead + "N2 G02 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
-  Format f;
-  EXPECT_NO_THROW(parse_frames(add_parity(text), f));
-  f.arcs = false;
-  try {
-    parse_frames(add_parity(text), f);
-    FAIL();
-  } catch (const TapeFormatError& e) {
-    EXPECT_EQ(e.info().code, 6u);
-    EXPECT_EQ(e.info().block, 2u);
-    EXPECT_EQ(e.info().offset, text.find("G02"));
+// Each arc rule of docs/circle-dda.md section 2, in the decoder's order, at the arc's LF.
+TEST(TapeErrors, BadArcsNameTheirRuleBlockAndLf) {
+  const struct {
+    const char* words;
+    unsigned code;
+  } cases[] = {
+      {"G02 X1.000 Y1.000 I0.000 J0.000", 12},   // zero radius
+      {"G03 X1.000 Y1.000 I1.000 J0.000", 10},   // (-1, 0) ccw to (0, 1): three quadrants
+      {"G03 X0.000 Y0.000 I1.000 J0.000", 10},   // no move: a full circle
+      {"G03 X1.000 Y-2.100 I1.000 J0.000", 11},  // (-1, 0) to (0, -2.1) mm: off its circle
+      {"G02 X65.535 Y-46.341 I-0.001 J-46.341", 4},  // end beyond the register
+  };
+  for (const auto& c : cases) {
+    const std::string block = std::string("N2 ") + c.words + "\n";
+    const std::string text = kHead + block + "M02\n%\n";
+    const ParseResult r = parse_frames_partial(add_parity(text), Format{});
+    ASSERT_TRUE(r.error) << c.words;
+    EXPECT_EQ(r.error->code, c.code) << c.words << ": " << r.error->message;
+    EXPECT_EQ(r.error->block, 2u) << c.words;
+    EXPECT_EQ(r.error->offset, kHead.size() + block.size() - 1) << c.words;
   }
+  // A good full quadrant passes.
+  const std::string good = kHead + "N2 G03 X-1.000 Y1.000 I-1.000 J0.000\nM02\n%\n";
+  EXPECT_NO_THROW(parse_frames(add_parity(good), Format{}));
 }
 
 TEST(TapeErrors, PartialParseKeepsTheGoodBlocks) {

@@ -7,6 +7,7 @@
 
 using namespace std::string_literals;
 
+#include "quadrant_arc.h"
 #include "tape.h"
 
 namespace ncinterp::tape {
@@ -57,9 +58,6 @@ TEST(TapeWriter, RefusesValuesTheDecoderWouldReject) {
   EXPECT_THROW(format_program(p, f), std::invalid_argument);
   p.blocks[0] = {1u << 20, Motion::kLine, 1, 1, 0, 0, 1000};  // N beyond SeqWidth 20
   EXPECT_THROW(format_program(p, f), std::invalid_argument);
-  p.blocks[0] = {1, Motion::kArcCw, 1, 1, 1, 0, 1000};
-  f.arcs = false;
-  EXPECT_THROW(format_program(p, f), std::invalid_argument);
 }
 
 TEST(TapeParity, EveryFrameHasEvenParity) {
@@ -90,15 +88,13 @@ Program random_program(std::mt19937_64& rng, const Format& f) {
     n += static_cast<uint32_t>(rng() % 20);  // repeated N is legal too
     b.n = n % (1u << f.seq_width);
     const int what = kind(rng);
-    b.motion = what == 4 ? Motion::kArcCw : what == 5 ? Motion::kArcCcw : Motion::kLine;
     b.dx = what == 1 ? 0 : inc(rng);  // axis-parallel and zero moves appear too
     b.dy = what == 2 ? 0 : inc(rng);
     if (what == 3) b.dx = b.dy = 0;
-    if (b.motion != Motion::kLine) {
-      b.i = inc(rng);
-      b.j = inc(rng);
-    }
     b.feed = feed(rng);
+    if (what >= 4)  // arcs must be good arcs: the reader checks them like the decoder
+      b = quadrant_arc(b.n, 1 + std::llabs(inc(rng)) % inc_max, static_cast<int>(rng() % 4),
+                       what == 5, b.feed);
     p.blocks.push_back(b);
   }
   return p;

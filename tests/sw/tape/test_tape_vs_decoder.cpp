@@ -3,13 +3,15 @@
 // characters, cut tapes) are read by parse_frames_partial and played by GoldenInterp.
 // Agreement means: the same verdict; on an error the same code, block N and frame offset;
 // and the machine's final position is the sum of the blocks the reader accepted (so no
-// pulse comes from the bad block).
+// pulse comes from the bad block). The tapes mix lines and quadrant arcs, so damage also
+// makes arcs that leave their quadrant, lose their radius or miss their circle.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "frame_source.h"
 #include "golden_interp.h"
+#include "quadrant_arc.h"
 #include "tape.h"
 
 namespace ncinterp::tape {
@@ -19,10 +21,15 @@ std::string random_good_tape(std::mt19937_64& rng) {
   Program p;
   p.end_m30 = rng() & 1;
   const int blocks = static_cast<int>(rng() % 12);
-  std::uniform_int_distribution<int64_t> inc(-999, 999);
-  for (int k = 0; k < blocks; ++k)
-    p.blocks.push_back({static_cast<uint32_t>(k + 1), Motion::kLine, inc(rng), inc(rng), 0, 0,
-                        1 + rng() % 5000});
+  std::uniform_int_distribution<int64_t> inc(-999, 999), radius(1, 999);
+  for (int k = 0; k < blocks; ++k) {
+    const uint32_t n = static_cast<uint32_t>(k + 1);
+    const uint64_t feed = 1 + rng() % 5000;
+    if (rng() % 3 == 0)
+      p.blocks.push_back(quadrant_arc(n, radius(rng), static_cast<int>(rng() % 4), rng() & 1, feed));
+    else
+      p.blocks.push_back({n, Motion::kLine, inc(rng), inc(rng), 0, 0, feed});
+  }
   std::string text = format_program(p, Format{});
   if (rng() % 3 == 0) text.insert(2, "(part 7, rev B)\n");
   if (rng() % 3 == 0) text.insert(0, std::string(rng() % 5, '\0'));  // leader
@@ -70,8 +77,7 @@ MachineResult play(const std::vector<uint8_t>& frames) {
 TEST(TapeReaderVsDecoder, DamagedTapesGetTheSameVerdict) {
   std::mt19937_64 rng(77);
   Format format;
-  format.arcs = false;  // the decoder has no circle mode yet: G02/G03 are error 6
-  int errors = 0, good = 0;
+  int errors = 0, good = 0, arc_errors = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const std::string text = random_good_tape(rng);
     std::vector<uint8_t> frames = add_parity(text);
@@ -93,6 +99,7 @@ TEST(TapeReaderVsDecoder, DamagedTapesGetTheSameVerdict) {
       EXPECT_EQ(m.out.error_code, r.error->code) << describe(*r.error);
       EXPECT_EQ(m.out.error_block, r.error->block) << describe(*r.error);
       EXPECT_EQ(m.out.error_offset, r.error->offset) << describe(*r.error);
+      arc_errors += r.error->code >= 10 && r.error->code <= 12;
     } else {
       ++good;
       EXPECT_TRUE(m.out.done);
@@ -104,6 +111,7 @@ TEST(TapeReaderVsDecoder, DamagedTapesGetTheSameVerdict) {
   // The generator must exercise both outcomes.
   EXPECT_GT(errors, 1000);
   EXPECT_GT(good, 100);
+  EXPECT_GT(arc_errors, 20);
 }
 
 }  // namespace
