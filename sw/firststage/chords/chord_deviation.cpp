@@ -9,6 +9,8 @@ namespace {
 
 // Chords whose direction is more than 60 degrees off the curve's are not chords of it.
 constexpr double kMinNormalCosine = 0.5;
+// A foot parameter is found when q is this close (BLU) to the curve's normal there.
+constexpr double kFootTolerance = 1e-6;
 
 }  // namespace
 
@@ -59,6 +61,10 @@ double foot_parameter(const Span& span, Vec2 q, double guess, double lo, double 
   // Newton from the guess; then a bracketed search if it wanders.
   for (int it = 0; it < 12; ++it) {
     const double v = f(t, &df);
+    // v is q's offset along the tangent (BLU): a micro-BLU is converged. (A test on the
+    // step in t alone never passes far from the origin, where v's rounding noise moves t
+    // by more than any fixed relative step.)
+    if (std::fabs(v) <= kFootTolerance) return t;
     if (!(df > 0)) break;
     const double next = std::clamp(t - v / df, lo, hi);
     if (std::fabs(next - t) <= 1e-13 * (1.0 + std::fabs(t))) return next;

@@ -38,7 +38,8 @@ struct ChordLine {
   Vec2 nu;
 };
 // Method 2 (the tangent-point equation solved by bracketed Newton on t0; see the .cpp).
-// `line` (optional) receives the chord's line when the solution does not reach t_hi.
+// `line` (optional) receives the chord's line when the solution does not reach t_hi and
+// is a one-sided chord (line->sigma stays 0 for a chord found by trial past an inflection).
 ChordSolution one_sided_chord(const Span& span, const ChordRequest& req,
                               ChordLine* line = nullptr);
 // Method 3 (method 2, then the far end by Newton on one variable).
@@ -48,10 +49,15 @@ ChordSolution two_sided_chord(const Span& span, const ChordRequest& req);
 constexpr double kTrialStepFactor = 1.05;
 
 // Shared by methods 2 and 3: the tangent point t0 of the chord from req.p (eq. 8 in
-// parametric form: sigma * n(t0).(P - C(t0)) = delta). Returns false when no such point
-// exists before t_hi (then *t0 = t_hi). sigma: the side the curve bends to (+1 left).
-bool tangent_point(const Span& span, const ChordRequest& req, int sigma, double* t0);
+// parametric form: sigma * n(t0).(P - C(t0)) = delta). kNone when no such point exists
+// before t_hi (then *t0 = t_hi); kInflection when the curve bends the other way before
+// it is reached (*t0: where the search saw that). sigma: the side the curve bends to
+// (+1 left).
+enum class TangentPoint { kFound, kNone, kInflection };
+TangentPoint tangent_point(const Span& span, const ChordRequest& req, int sigma, double* t0);
 // The side the curve bends to after t (+1 left, -1 right, 0 straight as far as t_hi).
 int bend_side(const Span& span, double t, double t_hi);
+// True when the curve at t bends to the other side than sigma (past an inflection).
+bool bends_against(const Span& span, double t, int sigma);
 
 }  // namespace ncinterp::firststage

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "chords/chord_deviation.h"
 #include "chords/chord_methods.h"
@@ -48,7 +49,7 @@ bool ChordPlanner::round_end(const Span& span, GridPoint p, double ta, Vec2 e, d
     const double t = c == end ? span.t_end() : foot_parameter(span, to_vec(c), te, ta, span.t_end());
     // Only the span's own end vertex may sit at its end parameter.
     if (c != end && t >= span.t_end()) return;
-    if (t > best && admissible(span, p, ta, c, t)) {
+    if (t > best && admissible(span, p, ta, c, t) && leaves_room(span, c, t, end)) {
       best = t;
       *q = c;
       *tb = t;
@@ -64,11 +65,27 @@ bool ChordPlanner::round_end(const Span& span, GridPoint p, double ta, Vec2 e, d
   return found;
 }
 
+bool ChordPlanner::leaves_room(const Span& span, GridPoint c, double tc, GridPoint end) const {
+  if (c == end || static_cast<double>(inf_norm(c, end)) >= 2.0 * opt_.delta + 2.0) return true;
+  return admissible(span, c, tc, end, span.t_end());
+}
+
+bool ChordPlanner::ends_at_crossing(const Span& span, const ChordSolution& sol, double ta,
+                                    GridPoint end) const {
+  // Only a two-sided chord whose far end leaves less than one chord's worth of the span.
+  if (sol.t_cross >= sol.t_end || span.t_end() - sol.t_end >= sol.t_end - ta) return false;
+  const Vec2 c = span.point(sol.t_cross);
+  const GridPoint g = round_to_grid(c);
+  const double tc = foot_parameter(span, to_vec(g), sol.t_cross, ta, span.t_end());
+  return admissible(span, g, tc, end, span.t_end());
+}
+
 bool ChordPlanner::fallback(const Span& span, GridPoint p, double ta, GridPoint end,
                             GridPoint* q, double* tb) const {
   double lo = ta, hi = span.t_end();
   bool found = false;
-  for (int it = 0; it < 60 && hi - lo > 1e-12; ++it) {
+  // Until the two ends are within half a BLU: finer steps round to the same grid points.
+  for (int it = 0; it < 60 && norm(span.point(hi) - span.point(lo)) > 0.5; ++it) {
     const double mid = 0.5 * (lo + hi);
     Vec2 e = span.point(mid);
     // Respect the register width along the way.
@@ -119,6 +136,9 @@ void ChordPlanner::plan(const Span& span, GridPoint start, GridPoint end,
       if (sol.reaches_end && sol.t_cross < t_hi) {  // Tamm's fig. 9: end at the crossing
         te = sol.t_cross;
         e = span.point(te);
+      } else if (ends_at_crossing(span, sol, ta, end)) {
+        te = sol.t_cross;
+        e = span.point(te);
       }
       // The paper's dy_max: keep the part of the chord that fits the register.
       const Vec2 d = e - to_vec(p);
@@ -135,7 +155,8 @@ void ChordPlanner::plan(const Span& span, GridPoint start, GridPoint end,
     if (!placed) {
       ++stats_.fallbacks;
       if (!fallback(span, p, ta, end, &q, &tb))
-        throw std::runtime_error("no chord within the tolerance fits here");
+        throw std::runtime_error("no chord within the tolerance fits at grid point (" +
+                                 std::to_string(p.x) + ", " + std::to_string(p.y) + ")");
     }
     out.push_back({q, span.index(tb)});
     ++stats_.chords;

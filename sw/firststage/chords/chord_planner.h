@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "chords/chord_methods.h"
 #include "chords/span.h"
 
 #pragma once
@@ -56,6 +57,16 @@ class ChordPlanner {
                  GridPoint* q, double* tb) const;
   bool fallback(const Span& span, GridPoint p, double ta, GridPoint end, GridPoint* q,
                 double* tb) const;
+  // False when c (not `end`) lies so near `end` that the last chord could not follow: a
+  // chord of a few BLU from up to delta outside onto the end crosses the curve almost
+  // along its normal, which no chord may do. Such a c is kept only if c -> end is
+  // admissible.
+  bool leaves_room(const Span& span, GridPoint c, double tc, GridPoint end) const;
+  // Method 3 near the span's end: true when a chord from this chord's crossing (on the
+  // curve) reaches `end`. Ending there (fig. 9 again) costs no chord and spares the span a
+  // short last chord that turns steeply back from delta outside onto the end point, which
+  // the cutter offset could not follow (it would leave the end uncut).
+  bool ends_at_crossing(const Span& span, const ChordSolution& sol, double ta, GridPoint end) const;
   bool admissible(const Span& span, GridPoint p, double ta, GridPoint q, double tb) const;
 
   PlannerOptions opt_;

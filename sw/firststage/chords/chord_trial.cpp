@@ -11,12 +11,23 @@
 #include "chords/chord_methods.h"
 
 namespace ncinterp::firststage {
+namespace {
+
+// Shortenings by kTrialStepFactor before the trial looks along the whole room instead
+// (130 times shorter).
+constexpr int kTrialShrinks = 100;
+
+}  // namespace
 
 ChordSolution trial_chord(const Span& span, const ChordRequest& req, double* step) {
   auto deviation = [&](double h) {
     const double te = std::min(req.ta + h, req.t_hi);
     return chord_deviation(span, req.p, span.point(te), req.ta, te);
   };
+  // A chord that starts off the curve (method 3's far end, when methods 2 and 3 hand an
+  // inflection over to the trial) deviates by its start's offset at least; the rest of the
+  // chord is held to delta.
+  const double allowed = std::max(req.delta, norm(req.p - span.point(req.ta)));
   const double room = req.t_hi - req.ta;
   double h = *step;
   if (!(h > 0)) {  // first chord of a span: a guess from the local curvature
@@ -26,15 +37,27 @@ ChordSolution trial_chord(const Span& span, const ChordRequest& req, double* ste
   }
   h = std::min(h, room);
   ChordSolution sol;
-  if (deviation(h) > req.delta) {
-    for (int it = 0; it < 2000 && deviation(h) > req.delta; ++it) h /= kTrialStepFactor;
-    if (deviation(h) > req.delta) return sol;  // not ok: the planner falls back
-  } else {
-    while (h < room) {
-      const double longer = std::min(h * kTrialStepFactor, room);
-      if (deviation(longer) > req.delta) break;
-      h = longer;
+  const auto fits = [&](double x) { return deviation(x) <= allowed; };
+  if (!fits(h)) {
+    for (int it = 0; it < kTrialShrinks && !fits(h); ++it) h /= kTrialStepFactor;
+    if (!fits(h)) {
+      // From a start off the curve a short chord is steep (it crosses the curve almost
+      // along the normal) and only a longer one fits: look along the whole room in coarse
+      // steps for the longest chord that fits, then refine it as above.
+      double found = 0.0;
+      for (double x = room; x > room * 1e-6; x /= 1.5)
+        if (fits(x)) {
+          found = x;
+          break;
+        }
+      if (found == 0.0) return sol;  // not ok: the planner falls back
+      h = found;
     }
+  }
+  while (h < room) {
+    const double longer = std::min(h * kTrialStepFactor, room);
+    if (!fits(longer)) break;
+    h = longer;
   }
   *step = h;
   sol.ok = true;

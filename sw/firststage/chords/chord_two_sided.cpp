@@ -18,7 +18,7 @@ namespace ncinterp::firststage {
 ChordSolution two_sided_chord(const Span& span, const ChordRequest& req) {
   ChordLine line;
   ChordSolution one = one_sided_chord(span, req, &line);
-  if (!one.ok || one.reaches_end) return one;
+  if (!one.ok || one.reaches_end || line.sigma == 0) return one;
   const int sigma = line.sigma;
   const double t0 = line.t0;
   const Vec2 nu = line.nu;
@@ -33,7 +33,7 @@ ChordSolution two_sided_chord(const Span& span, const ChordRequest& req) {
   const double t1 = one.t_cross;
   // Parabola guess: sigma g ~ -delta + a (t - t0)^2 with a from the crossing at t1.
   double step = std::max((t1 - t0) * (std::sqrt(2.0) - 1.0), 1e-9);
-  double lo = t1, t = std::min(t1 + step, req.t_hi), dh;
+  double lo = t1, t = std::min({t1 + step, req.t_hi, span.next_joint(lo)}), dh;
   while (h(t, &dh) < 0) {
     if (t >= req.t_hi) {
       ChordSolution sol = one;
@@ -42,9 +42,12 @@ ChordSolution two_sided_chord(const Span& span, const ChordRequest& req) {
       sol.end = span.point(req.t_hi);
       return sol;
     }
+    // Past an inflection the curve turns away from the line: no far end on the other side
+    // here; the chord ends at its crossing, as a one-sided chord.
+    if (bends_against(span, t, sigma)) return one;
     lo = t;
     step *= 2.0;
-    t = std::min(t1 + step, req.t_hi);
+    t = std::min({t1 + step, req.t_hi, span.next_joint(lo)});
   }
   t = bracketed_newton(h, lo, t, std::min(t1 + (t1 - t0) * (std::sqrt(2.0) - 1.0), t));
   ChordSolution sol;

@@ -26,6 +26,9 @@ class Span {
     const int i = std::clamp(static_cast<int>(std::ceil(t)) - 1, 0, n_ - 1);
     return seg_[i].eval(t - i);
   }
+  // The first joint (or the span's end) after t: searches step no farther at a time, so
+  // they see every segment's bend.
+  double next_joint(double t) const { return std::min(std::floor(t) + 1.0, t_end()); }
   Vec2 point(double t) const {
     const int i = index(t);
     return seg_[i].point(t - i);

@@ -15,7 +15,9 @@ inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
 inline Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
 inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+// Plain sqrt, not std::hypot: coordinates are at most ~1e9 BLU, far from overflow, and
+// hypot's care costs a fifth of the chord planner's time.
+inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 // Left normal: the vector turned +90 degrees.
 inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
 inline Vec2 unit(Vec2 a) {

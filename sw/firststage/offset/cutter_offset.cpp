@@ -2,6 +2,7 @@
 #include "offset/cutter_offset.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace ncinterp::firststage {
@@ -54,22 +55,39 @@ void offset_chain(const std::vector<Vec2>& pts, const std::vector<int>& elements
     lines.push_back({pts[k], d, left ? perp(d) : -1.0 * perp(d), elements[k]});
     ends.push_back(pts[k + 1]);
   }
-  // Drop lines whose trimmed offset reverses, until none does.
+  // Drop lines whose trimmed offset reverses, until none does. A line is trimmed only at
+  // concave joints (there its offset ends where the neighbour's begins); at a convex joint
+  // it is extended, so it cannot reverse. An open chain's first (last) line starts (ends)
+  // at the normal offset of the chain's end point; if that line reverses, the path must
+  // not follow it back (it would pass nearer than R to the chord before it), so it is
+  // dropped but kept as the chain's bound: the path then starts (ends) where the next
+  // line's offset meets its offset, as at an inner concave joint.
+  const double side = left ? 1.0 : -1.0;
+  const auto concave = [&](const OffsetLine& a, const OffsetLine& b) {
+    return side * std::atan2(cross(a.d, b.d), dot(a.d, b.d)) >= 0;
+  };
+  const Vec2 chain_start = pts.front();
+  std::optional<OffsetLine> first_bound, last_bound;  // dropped terminal lines (open chains)
+  const auto path_start = [&]() {
+    return first_bound ? intersect(*first_bound, lines.front(), r) : chain_start + r * lines.front().n;
+  };
+  const auto path_end = [&]() {
+    return last_bound ? intersect(lines.back(), *last_bound, r) : ends.back() + r * lines.back().n;
+  };
   for (bool again = true; again && lines.size() >= 2;) {
     again = false;
     const size_t m = lines.size();
     for (size_t k = 0; k < m; ++k) {
       const bool has_prev = closed || k > 0, has_next = closed || k + 1 < m;
-      if (!has_prev || !has_next || m <= 2) continue;
-      const OffsetLine& a = lines[(k + m - 1) % m];
+      if (closed && m <= 2) continue;
       const OffsetLine& b = lines[k];
-      const OffsetLine& c = lines[(k + 1) % m];
-      const double tab = std::atan2(cross(a.d, b.d), dot(a.d, b.d));
-      const double tbc = std::atan2(cross(b.d, c.d), dot(b.d, c.d));
-      const double side = left ? 1.0 : -1.0;
-      if (side * tab < 0 || side * tbc < 0) continue;  // only concave-concave lines shrink
-      const Vec2 s = intersect(a, b, r), e = intersect(b, c, r);
+      if (has_prev && !concave(lines[(k + m - 1) % m], b)) continue;
+      if (has_next && !concave(b, lines[(k + 1) % m])) continue;
+      const Vec2 s = has_prev ? intersect(lines[(k + m - 1) % m], b, r) : path_start();
+      const Vec2 e = has_next ? intersect(b, lines[(k + 1) % m], r) : path_end();
       if (dot(e - s, b.d) < 0) {
+        if (!has_prev && !first_bound) first_bound = b;
+        if (!has_next && !last_bound) last_bound = b;
         lines.erase(lines.begin() + static_cast<long>(k));
         ends.erase(ends.begin() + static_cast<long>(k));
         if (dropped) ++*dropped;
@@ -86,7 +104,7 @@ void offset_chain(const std::vector<Vec2>& pts, const std::vector<int>& elements
     corner(lines[m - 1], lines[0], lines[0].p, r, first);
     out->push_back(first.back());
   } else {
-    out->push_back(lines[0].p + r * lines[0].n);
+    out->push_back(path_start());
   }
   for (size_t k = 0; k < m; ++k) {
     const bool last = k + 1 == m;
@@ -97,7 +115,7 @@ void offset_chain(const std::vector<Vec2>& pts, const std::vector<int>& elements
       corner(lines[k], lines[0], ends[k], r, vs);
       // The path ends where it started: the last vertex of this corner.
     } else {
-      vs.push_back(ends[k] + r * lines[k].n);
+      vs.push_back(path_end());
     }
     for (const Vec2& v : vs) {
       out->push_back(v);

@@ -13,7 +13,11 @@
 // sharp corners such as a trailing edge. At a concave vertex the offset lines are
 // intersected before their ends (trimmed): the cutter touches both chords and cannot cut
 // into either (no gouge). A trimmed offset line whose direction reverses (the chord is
-// shorter than the cutter can follow) is dropped and its neighbours intersected.
+// shorter than the cutter can follow) is dropped and its neighbours intersected. At the
+// ends of an open chain the path starts and ends on the normal offset of the chain's end
+// points; if the first or last line reverses there, it is dropped too and the path starts
+// (ends) where its neighbour's offset meets its offset, so the cutter never backs up into
+// the chord before it.
 #pragma once
 #include <vector>
 
