@@ -92,7 +92,7 @@ double exact_distance(P2 p, const Polyline& line, long* at, double best) {
 }  // namespace
 
 CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& path_pts,
-                       double step, const std::vector<P2>& corners) {
+                       double step, const std::vector<P2>& corners, double exact_above) {
   CheckResult r;
   if (curve_pts.size() < 2 || path_pts.size() < 2) {
     r.unmatched = static_cast<long>(curve_pts.size());
@@ -138,7 +138,7 @@ CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& 
         const double v = normal_hit(c, nx, ny, path, j);
         if (v < best) best = v, at = j;
       }
-      if (best > r.normal_max) {  // a new maximum, or a miss: measure exactly
+      if (best > std::max(r.normal_max, exact_above)) {  // a new maximum, or a miss: measure exactly
         ++r.wide_searches;
         path.scan(c, [&](long j) { return normal_hit(c, nx, ny, path, j); }, &best, &at);
       }
@@ -161,7 +161,7 @@ CheckResult check_path(const std::vector<P2>& curve_pts, const std::vector<P2>& 
       const P2 p{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
       ++r.samples;
       double best = descend(p, curve, &ci);
-      if (best > r.path_max) {
+      if (best > std::max(r.path_max, exact_above)) {
         ++r.wide_searches;
         best = exact_distance(p, curve, &ci, best);
       }

@@ -10,8 +10,8 @@
 // (curve segments) near a pointer that moves along with it. A minimum over fewer
 // candidates can only be larger than the true one, so such an estimate that stays at or
 // below the running maximum cannot change the result; only an estimate above it is
-// measured again over a wide window (the old brute force). The result is the brute-force
-// result, in time linear in the number of samples.
+// measured again exactly, over the whole other polyline. The result is the brute-force
+// result, in time about linear in the number of samples.
 #pragma once
 #include <limits>
 #include <vector>
@@ -38,8 +38,13 @@ struct CheckResult {
 // passes beside that vertex and meets a neighbouring chord far away, or nothing. Curve
 // samples closer to a corner than the path's nearest vertex is (plus one sample spacing)
 // are therefore measured by their Euclidean distance to the path instead.
+// `exact_above` (mm): estimates at or below it are not measured again, so a maximum at
+// or below it may be an upper bound of the true one (never smaller than it); a maximum
+// above it is exact. A test of "max <= bound" passes exact_above = bound and is decided
+// exactly, without the exact searches a slowly growing deviation would cost (each sample
+// a new maximum). 0: every maximum exact.
 CheckResult check_path(const std::vector<P2>& curve, const std::vector<P2>& path, double step,
-                       const std::vector<P2>& corners = {});
+                       const std::vector<P2>& corners = {}, double exact_above = 0.0);
 
 // Min and max over `points` of the Euclidean distance to the nearest of the polylines
 // `lines` (exact). The cutter-offset tests use it: every contour point must be between
