@@ -5,9 +5,11 @@
 //   quadrants   the golden circle DDA on full quadrant blocks, worst radial error by radius
 //   random      random quadrant arcs: radial error bound, iteration count
 //   exhaustive  every good arc of small machines (W = 5, 6)
+//   feed        arc blocks played by the whole golden interpolator: block time against
+//               1/F, saturation, the decoder's arc preparation against the block time
 // Idea: all numbers come from the same golden classes the interpolator uses
-// (sc_model/golden/circle_dda.h, arc_geometry.h), except the scheme study, which needs a
-// free-running circle (bench/circle/scheme_study.h).
+// (sc_model/golden/circle_dda.h, arc_geometry.h, golden_interp.h), except the scheme
+// study, which needs a free-running circle (bench/circle/scheme_study.h).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
@@ -18,7 +20,11 @@
 
 #include "arc_geometry.h"
 #include "circle_test_support.h"
+#include "firststage.h"
+#include "frame_source.h"
+#include "golden_interp.h"
 #include "scheme_study.h"
+#include "tape.h"
 
 namespace ncinterp::bench {
 namespace {
@@ -181,6 +187,87 @@ void exhaustive_section(unsigned max_width) {
   for (unsigned w = 2; w <= max_width; ++w) exhaustive_width(w);
 }
 
+// One full circle of four quadrant blocks of radius r BLU at a contour feed of v mm/min, F
+// written as the first stage writes it (rounded down: a block is never faster than the
+// feed), played on the golden interpolator at 1 MHz with a reader fast enough never to be
+// the bottleneck (one frame per clock), so only the interpolator's own timing shows.
+struct FeedRun {
+  uint64_t iterations = 0;       // N of the first quadrant
+  uint64_t clocks = 0;           // busy clocks of the first quadrant
+  double ideal_clocks = 0;       // its length / v, in clocks
+  uint64_t feed = 0;             // F on tape, 10^-3 1/min
+  bool saturated = false;
+  uint64_t gap_clocks = 0;       // clocks between the first load and the end with busy low
+};
+
+FeedRun run_feed(int64_t r, double v_mm_min) {
+  constexpr double kClockHz = 1e6, kBlu = 0.001;
+  InterpConfig cfg;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(kClockHz, cfg.feed_frac_digits);
+  const double length_mm = M_PI / 2 * double(r) * kBlu;
+  tape::Program p;
+  for (int q = 0; q < 4; ++q) {
+    const QuadrantArc a = test::full_quadrant(r, q, true);
+    tape::Block b;
+    b.n = static_cast<uint32_t>(q + 1);
+    b.motion = tape::Motion::kArcCcw;
+    b.i = -a.x0, b.j = -a.y0, b.dx = a.x1 - a.x0, b.dy = a.y1 - a.y0;
+    b.feed = firststage::inverse_time_feed(length_mm, v_mm_min, cfg.feed_frac_digits);
+    p.blocks.push_back(b);
+  }
+  tape::Format format;
+  GoldenInterp dut(cfg);
+  FrameSource source(tape::add_parity(tape::format_program(p, format)), 1);
+  FeedRun run;
+  run.feed = p.blocks[0].feed;
+  run.ideal_clocks = length_mm / v_mm_min * 60.0 * kClockHz;
+  bool started = false;
+  while (!dut.outputs().done && !dut.outputs().error) {
+    const bool ready = dut.outputs().frame_ready;
+    dut.tick(source.inputs());
+    source.clock(ready);
+    const InterpOutputs& o = dut.outputs();
+    started = started || o.busy;
+    if (o.busy && o.block_n == 1) {
+      ++run.clocks;
+      run.saturated = o.feed_saturated;
+    }
+    if (started && !o.busy && !o.done) ++run.gap_clocks;
+  }
+  if (dut.outputs().error) throw std::runtime_error("feed run: the tape was refused");
+  --run.gap_clocks;  // the clock after the last block, before done rises, is not a gap
+  run.iterations = test::run_arc(test::full_quadrant(r, 0, true), 16, 1u << 20).iterations;
+  return run;
+}
+
+void feed_section() {
+  std::printf("\n### Arc blocks on the golden interpolator: time against 1/F (1 MHz, BLU 0.001 mm, "
+              "W = 16, full quadrants, four per circle)\n\n");
+  std::printf("| radius (BLU) | N | contour feed (mm/min) | F on tape (1/min) | clocks | "
+              "length / feed (clocks) | time error | saturated | arc preparation (clocks) | "
+              "gap clocks in the circle | feed at saturation (mm/min) |\n"
+              "|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|\n");
+  for (int64_t r : {1, 10, 100, 1000, 10000, 50000, 65535})
+    for (double v : {100.0, 1000.0, 10000.0, 100000.0}) {
+      FeedRun f;
+      try {
+        f = run_feed(r, v);
+      } catch (const std::invalid_argument& e) {  // the tape writer refuses F > 2^32 - 1
+        std::printf("| %lld | | %.0f | %s | | | | | | | |\n", static_cast<long long>(r), v, e.what());
+        continue;
+      }
+      const uint64_t prepare = std::max<uint64_t>(f.iterations, 2 * 16 + 3);
+      // Saturation when F * N >= M: F = M / N (10^-3 1/min), contour feed F * length.
+      const double v_sat = 60.0 * 1e6 / double(f.iterations) * (M_PI / 2 * double(r) * 0.001);
+      std::printf("| %lld | %llu | %.0f | %.3f | %llu | %.1f | %+.3f %% | %s | %llu | %llu | %.0f |\n",
+                  static_cast<long long>(r), static_cast<unsigned long long>(f.iterations), v,
+                  f.feed / 1000.0, static_cast<unsigned long long>(f.clocks), f.ideal_clocks,
+                  100.0 * (double(f.clocks) - f.ideal_clocks) / f.ideal_clocks,
+                  f.saturated ? "yes" : "no", static_cast<unsigned long long>(prepare),
+                  static_cast<unsigned long long>(f.gap_clocks), v_sat);
+    }
+}
+
 }  // namespace
 }  // namespace ncinterp::bench
 
@@ -190,8 +277,8 @@ int main(int argc, char** argv) {
   int count = 100000;
   uint64_t seed = 1;
   unsigned max_width = 6;
-  app.add_option("--section", section, "scheme|quadrants|random|exhaustive|all")
-      ->check(CLI::IsMember({"scheme", "quadrants", "random", "exhaustive", "all"}));
+  app.add_option("--section", section, "scheme|quadrants|random|exhaustive|feed|all")
+      ->check(CLI::IsMember({"scheme", "quadrants", "random", "exhaustive", "feed", "all"}));
   app.add_option("--arcs", count, "random arcs");
   app.add_option("--seed", seed, "random seed");
   app.add_option("--max-width", max_width, "largest W of the exhaustive section")
@@ -206,5 +293,6 @@ int main(int argc, char** argv) {
   if (section == "quadrants" || section == "all") quadrants_section();
   if (section == "random" || section == "all") random_section(count, seed);
   if (section == "exhaustive" || section == "all") exhaustive_section(max_width);
+  if (section == "feed" || section == "all") feed_section();
   return 0;
 }

@@ -36,7 +36,7 @@ struct CheckSetup {
   bool cutter_left = true;
   bool keep_pulses = true;
   bool schedule = true;            // documented-timing rules for line blocks
-  double arc_bound_blu = 0.88;     // see CheckerOptions
+  double arc_bound_blu = kCircleDdaBound;  // see CheckerOptions
   uint64_t max_cycles = 0;         // 0: enough for the program (estimated from the tape)
   // Golden engine only: a fault injected through the model's test hook.
   std::optional<GoldenInterp::Fault> fault;

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "circle_dda.h"
 #include "interp_ports.h"
 #include "line_schedule.h"
 #include "programmed_path.h"
@@ -102,7 +103,7 @@ struct CheckerOptions {
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_bound_blu + |R1 - R0| (docs/circle-dda.md 3.2: 0.88 BLU,
   // measured on every good arc up to W = 7 and 100000 random arcs at W = 16).
-  double arc_bound_blu = 0.88;
+  double arc_bound_blu = kCircleDdaBound;
   double tol_blu = 10.0;       // delta, for telling rapid traverses from cutting blocks
   bool keep_pulses = true;     // record every pulse (plots, error along the path)
   size_t max_violations = 1000;  // details kept; all are counted

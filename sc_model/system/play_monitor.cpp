@@ -1,5 +1,5 @@
 // Monitors of a play run (see play_monitor.h): pulse counts, positions, gaps, path error
-// against the programmed chords, and block timing against the programmed 1/F.
+// against the programmed chords and arcs, and block timing against the programmed 1/F.
 #include "play_monitor.h"
 
 #include <cmath>
@@ -18,6 +18,18 @@ double distance_to_segment(double px, double py, double dx, double dy) {
   double t = len2 > 0 ? (px * dx + py * dy) / len2 : 0.0;
   t = t < 0 ? 0 : t > 1 ? 1 : t;
   return std::hypot(px - t * dx, py - t * dy);
+}
+
+PathError block_path_error(const tape::Block& b, double px, double py) {
+  if (b.motion == tape::Motion::kLine)
+    return {distance_to_segment(px, py, static_cast<double>(b.dx), static_cast<double>(b.dy)),
+            line_path_bound(b.dx, b.dy)};
+  // Relative to the centre, which is at (i, j) from the block's start.
+  const double i = static_cast<double>(b.i), j = static_cast<double>(b.j);
+  const double r0 = std::hypot(i, j);
+  const double r1 = std::hypot(static_cast<double>(b.dx) - i, static_cast<double>(b.dy) - j);
+  return {std::fabs(std::hypot(px - i, py - j) - r0),
+          std::min(kCirclePathBound, kCircleDdaBound + std::fabs(r1 - r0))};
 }
 
 namespace {
@@ -81,10 +93,10 @@ void PlayMonitor::pulse(int64_t x, int64_t y) {
   }
   double error;
   if (cursor_ < blocks.size()) {
-    const tape::Block& b = blocks[cursor_];
-    error = distance_to_segment(static_cast<double>(x - start_x_), static_cast<double>(y - start_y_),
-                                static_cast<double>(b.dx), static_cast<double>(b.dy));
-    if (error > line_path_bound(b.dx, b.dy) + 1e-9) s_.path_within_bound = false;
+    const PathError e = block_path_error(blocks[cursor_], static_cast<double>(x - start_x_),
+                                         static_cast<double>(y - start_y_));
+    error = e.distance;
+    if (error > e.bound + 1e-9) s_.path_within_bound = false;
   } else {  // a pulse the program does not have: measured from the programmed end point
     ++s_.pulses_beyond_program;
     s_.path_within_bound = false;

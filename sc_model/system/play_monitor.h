@@ -4,9 +4,10 @@
 // the RTL), once per clock after the edge, and the programmed blocks (tape::Program from
 // the software reader). From these it measures
 //   - pulses per axis and direction, final position, gap clocks;
-//   - path error: every pulse position's distance to its block's programmed chord. Pulses
-//     are assigned to blocks by count (block k owns the |dx_k| + |dy_k| pulses after
-//     those of blocks 0..k-1), which needs no block boundary on the ports;
+//   - path error: every pulse position's distance to its block's programmed chord, or for
+//     an arc to the circle through its start. Pulses are assigned to blocks by count
+//     (block k owns the |dx_k| + |dy_k| pulses after those of blocks 0..k-1), which needs
+//     no block boundary on the ports;
 //   - block timing: a block starts where busy rises or block_n changes while busy and
 //     ends at the next start or where busy falls; its clocks are compared with the
 //     programmed 1/F minute (docs/interpolator.md section 5.4).
@@ -16,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "circle_dda.h"
 #include "interp_ports.h"
 #include "tape.h"
 
@@ -51,10 +53,10 @@ struct PlaySummary {
   uint64_t lead_in_cycles = 0;  // before the first block loads (reading the first block)
   uint64_t gap_cycles = 0;      // idle between blocks: the reader was too slow
   uint64_t busy_cycles = 0;
-  // Path error (BLU) and the L1 bound of the worst block (docs/interpolator.md 5.5).
+  // Path error (BLU): the largest distance of a pulse position from its block's path.
   double max_path_error = 0;
   uint32_t max_path_error_block = 0;
-  bool path_within_bound = true;    // every pulse within its own block's bound
+  bool path_within_bound = true;    // every pulse within its own block's bound (below)
   uint64_t pulses_beyond_program = 0;  // more pulses than the program has
   size_t blocks_played = 0;          // tape blocks covered by observed blocks
   std::vector<BlockTiming> timeline;
@@ -99,5 +101,13 @@ class PlayMonitor {
 double line_path_bound(int64_t dx, int64_t dy);
 // Distance from point (px, py) to the segment (0,0)-(dx,dy).
 double distance_to_segment(double px, double py, double dx, double dy);
+
+// A pulse position (px, py), relative to the block's start, against the block's path: the
+// distance to the chord (line) or to the circle through the start (arc), and the bound that
+// distance must keep (line_path_bound, or the circle DDA's bounds in circle_dda.h).
+struct PathError {
+  double distance, bound;
+};
+PathError block_path_error(const tape::Block& b, double px, double py);
 
 }  // namespace ncinterp::system

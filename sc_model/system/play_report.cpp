@@ -43,7 +43,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["expected_position_blu"] = {{"x", s.expected_x}, {"y", s.expected_y}};
   j["max_path_error_blu"] = s.max_path_error;
   j["max_path_error_block"] = s.max_path_error_block;
-  j["path_within_l1_bound"] = s.path_within_bound;
+  j["path_within_bound"] = s.path_within_bound;
   j["pulses_beyond_program"] = s.pulses_beyond_program;
   j["clock_hz"] = r.clock_hz;
   j["reader_cps"] = r.reader_cps;

@@ -64,7 +64,7 @@ TEST(CircleCosim, FiftyMillimetreCircleOfFourQuadrants) {
   double worst = 0;
   for (const auto& pulse : rec.pulses)
     worst = std::max(worst, std::fabs(std::hypot(double(pulse.x + r), double(pulse.y)) - double(r)));
-  EXPECT_LE(worst, test::kCircleDdaBound);
+  EXPECT_LE(worst, kCircleDdaBound);
 }
 
 // Random programs in shards, so ctest can run them in parallel: 4 shards x 8 tapes x 12

@@ -87,7 +87,7 @@ TEST(CircleInterp, FiftyMillimetreCircleOfFourQuadrantsReturnsToItsStart) {
     EXPECT_EQ(r.out.pos_x, 0);
     EXPECT_EQ(r.out.pos_y, 0);
     ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg.feed_modulus));
-    EXPECT_LE(max_circle_error(r.rec), test::kCircleDdaBound);
+    EXPECT_LE(max_circle_error(r.rec), kCircleDdaBound);
     // No gaps: the four blocks follow each other (0.2 s each, 1/F).
     EXPECT_EQ(r.rec.busy_cycles, 4 * 200000u);
     ASSERT_EQ(r.rec.starts.size(), 4u);
@@ -115,7 +115,7 @@ TEST(CircleInterp, TenTurnsDoNotDrift) {
     ASSERT_EQ(b.x, a.x);
     ASSERT_EQ(b.y, a.y);
   }
-  EXPECT_LE(max_circle_error(r.rec), test::kCircleDdaBound);
+  EXPECT_LE(max_circle_error(r.rec), kCircleDdaBound);
 }
 
 TEST(CircleInterp, RandomProgramsOfArcsAndLines) {

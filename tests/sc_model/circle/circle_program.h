@@ -9,17 +9,12 @@
 #include <random>
 #include <vector>
 
+#include "circle_dda.h"
 #include "interp_ports.h"
 #include "interp_test_support.h"
 #include "tape.h"
 
 namespace ncinterp::test {
-
-// The circle DDA's path bounds (docs/circle-dda.md 3.2): every pulse position is within
-// kCircleDdaBound + |R1 - R0| of the circle through the block's start about its centre,
-// and never more than kCirclePathBound off it.
-constexpr double kCircleDdaBound = 0.88;
-constexpr double kCirclePathBound = 1.0;
 
 // A random program: `blocks` motion blocks, about arc_share of them quadrant arcs (radius
 // log-uniform 1 .. 2^W - 1, random quadrant, direction, full or partial) and the rest
