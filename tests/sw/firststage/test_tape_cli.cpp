@@ -193,6 +193,9 @@ struct BadCase {
   const char* expected;  // the start of the one-line message after the directory
 };
 
+// ctest lists the case by its file name.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
 class TapeCliBadInput : public TapeCli, public ::testing::WithParamInterface<BadCase> {};
 
 TEST_P(TapeCliBadInput, OneLineNamingFileAndLineNoOutput) {
