@@ -140,7 +140,7 @@ TEST_P(TapeCliExamples, EveryMethodAndArcModeMakesAPlayableTape) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, TapeCliExamples,
-                         ::testing::Values("circle_r50.json", "reference_table.json", "part.nc",
+                         ::testing::Values("circle_r50.json", "reference_table.json", "profile.json", "part.nc",
                                            "naca2412_selig.dat", "naca2412_lednicer.dat"),
                          [](const auto& info) {
                            std::string n = info.param;
