@@ -8,10 +8,10 @@
 // cross-checks the two on thousands of damaged tapes, so a tape this reader accepts is a
 // tape the machine plays.
 #include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
+#include "arc_rules.h"
 #include "tape.h"
 
 namespace ncinterp::tape {
@@ -29,38 +29,7 @@ enum Code : unsigned {
   kTruncatedTape = 7,
   kBlockAfterEnd = 8,
   kMissingFeed = 9,
-  kArcCrossesQuadrant = 10,
-  kArcEndpointOffCircle = 11,
-  kArcZeroRadius = 12,
 };
-
-// An arc block's checks in the decoder's order; 0 for a good arc. Coordinates relative to
-// the centre: start (-I, -J), end (X - I, Y - J).
-unsigned arc_error(const Block& b, uint64_t inc_max) {
-  if (b.i == 0 && b.j == 0) return kArcZeroRadius;
-  const int64_t x0 = -b.i, y0 = -b.j, x1 = x0 + b.dx, y1 = y0 + b.dy;
-  const bool ccw = b.motion == Motion::kArcCcw;
-  // Inside one closed quadrant (sx, sy): both ends in it, and each coordinate moves the way
-  // the direction goes there (counter-clockwise: x towards -sy, y towards +sx).
-  bool inside = false;
-  for (int sx : {1, -1})
-    for (int sy : {1, -1}) {
-      const bool ends = sx * x0 >= 0 && sx * x1 >= 0 && sy * y0 >= 0 && sy * y1 >= 0;
-      const int turn = ccw ? 1 : -1;
-      const bool moves = turn * sy * b.dx <= 0 && turn * sx * b.dy >= 0;
-      inside = inside || (ends && moves);
-    }
-  if (!inside || (b.dx == 0 && b.dy == 0)) return kArcCrossesQuadrant;
-  if (static_cast<uint64_t>(std::llabs(x1)) > inc_max || static_cast<uint64_t>(std::llabs(y1)) > inc_max)
-    return kValueTooWide;
-  // |R1 - R0| <= 1 exactly: with A = R0^2, B = R1^2, (B - A - 1)^2 <= 4A. |B - A - 1| beyond
-  // 2^40 fails anyway (4A < 2^67) and keeps the square inside 128 bits.
-  const __int128 a = __int128{x0} * x0 + __int128{y0} * y0;
-  const __int128 e = __int128{x1} * x1 + __int128{y1} * y1 - a - 1;
-  const __int128 mag = e < 0 ? -e : e;
-  if (mag > (__int128{1} << 40) || mag * mag > 4 * a) return kArcEndpointOffCircle;
-  return 0;
-}
 
 uint64_t max_for_width(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
 
@@ -286,18 +255,8 @@ class Reader {
   }
 
   void check_arc() {
-    switch (arc_error(block_, inc_max_)) {
-      case kArcZeroRadius: fail(kArcZeroRadius, offset_, "arc with zero radius: I and J are 0");
-      case kArcCrossesQuadrant:
-        fail(kArcCrossesQuadrant, offset_, "arc not inside one quadrant about its centre");
-      case kValueTooWide:
-        fail(kValueTooWide, offset_,
-             "value too wide for its register: the arc's end about its centre exceeds " +
-                 std::to_string(inc_max_));
-      case kArcEndpointOffCircle:
-        fail(kArcEndpointOffCircle, offset_, "arc endpoint more than 1 BLU off its circle");
-      default: break;
-    }
+    const ArcRuleBroken broken = broken_arc_rule(block_, inc_max_);
+    if (broken.code != 0) fail(broken.code, offset_, broken.message);
   }
 
   const Format& format_;

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "arc_rules.h"
 #include "tape.h"
 
 namespace ncinterp::tape {
@@ -46,6 +47,10 @@ void check_block(const Block& b, const Format& f) {
   check_inc(b.j, "J");
   if (b.motion == Motion::kLine && (b.i != 0 || b.j != 0))
     throw std::invalid_argument(where + "a line block has I/J");
+  if (b.motion != Motion::kLine) {
+    const ArcRuleBroken broken = broken_arc_rule(b, inc_max);
+    if (broken.code != 0) throw std::invalid_argument(where + broken.message);
+  }
   if (b.feed == 0) throw std::invalid_argument(where + "feed F is 0");
   if (b.feed > max_for_width(f.feed_width))
     throw std::invalid_argument(where + "feed exceeds the F register");

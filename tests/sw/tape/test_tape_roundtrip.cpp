@@ -58,6 +58,10 @@ TEST(TapeWriter, RefusesValuesTheDecoderWouldReject) {
   EXPECT_THROW(format_program(p, f), std::invalid_argument);
   p.blocks[0] = {1u << 20, Motion::kLine, 1, 1, 0, 0, 1000};  // N beyond SeqWidth 20
   EXPECT_THROW(format_program(p, f), std::invalid_argument);
+  p.blocks[0] = {1, Motion::kArcCcw, 1000, 1000, 1000, 0, 1000};  // leaves its quadrant
+  EXPECT_THROW(format_program(p, f), std::invalid_argument);
+  p.blocks[0] = {1, Motion::kArcCcw, -1000, 1000, -1000, 0, 1000};  // a good quadrant
+  EXPECT_NO_THROW(format_program(p, f));
 }
 
 TEST(TapeParity, EveryFrameHasEvenParity) {
