@@ -8,13 +8,12 @@
 // again with a smaller delta; as a last resort a bisection over chord ends on the curve
 // (always possible since delta >= 1 BLU). Every chord starts where the last one ended (a
 // grid point), so the increments sum exactly to the span's end: no drift.
+#pragma once
 #include <cstdint>
 #include <vector>
 
 #include "chords/chord_methods.h"
 #include "chords/span.h"
-
-#pragma once
 
 namespace ncinterp::firststage {
 
