@@ -29,15 +29,7 @@ namespace {
 using namespace ncinterp::firststage;
 
 Contour contour_of(Vec2 origin, std::vector<Segment> segs) {
-  Contour c;
-  c.file = "bench";
-  c.origin = origin;
-  for (size_t i = 0; i < segs.size(); ++i) {
-    segs[i].source_index = static_cast<int>(i);
-    c.element_names.push_back("segment " + std::to_string(i + 1));
-  }
-  c.segments = std::move(segs);
-  return c;
+  return contour_from_segments("bench", origin, std::move(segs));
 }
 
 Contour circle(double r) { return contour_of({r, 0}, {Segment::arc({0, 0}, r, 0.0, 2 * M_PI)}); }

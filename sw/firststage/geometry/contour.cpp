@@ -2,6 +2,8 @@
 #include "geometry/contour.h"
 
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace ncinterp::firststage {
 
@@ -9,6 +11,18 @@ bool Contour::closed() const {
   if (segments.empty()) return false;
   const Vec2 d = segments.back().end() - segments.front().start();
   return norm(d) <= 1e-9 * (1.0 + norm(segments.front().start()));
+}
+
+Contour contour_from_segments(const std::string& file, Vec2 origin, std::vector<Segment> segments) {
+  Contour c;
+  c.file = file;
+  c.origin = origin;
+  for (size_t i = 0; i < segments.size(); ++i) {
+    segments[i].source_index = static_cast<int>(i);
+    c.element_names.push_back("segment " + std::to_string(i + 1));
+  }
+  c.segments = std::move(segments);
+  return c;
 }
 
 double joint_turn(const Segment& a, const Segment& b) {

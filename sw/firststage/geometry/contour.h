@@ -26,6 +26,10 @@ struct Contour {
   bool closed() const;
 };
 
+// A contour built in code (tests, benchmarks): segment i is input element i, named
+// "segment i+1".
+Contour contour_from_segments(const std::string& file, Vec2 origin, std::vector<Segment> segments);
+
 // Turn angle (rad, >= 0) of the tangent from the end of a to the start of b.
 double joint_turn(const Segment& a, const Segment& b);
 // True when a chord may cross the joint between a and b (no rapid, tangents agree).

@@ -76,15 +76,7 @@ inline std::vector<P2> sample_curve(const std::function<P2(double)>& f, long n) 
 }
 
 inline Contour contour_of(Vec2 origin, std::vector<Segment> segs) {
-  Contour c;
-  c.file = "test";
-  c.origin = origin;
-  for (size_t i = 0; i < segs.size(); ++i) {
-    segs[i].source_index = static_cast<int>(i);
-    c.element_names.push_back("segment " + std::to_string(i));
-  }
-  c.segments = std::move(segs);
-  return c;
+  return firststage::contour_from_segments("test", origin, std::move(segs));
 }
 
 }  // namespace ncinterp::test
