@@ -10,9 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <mutex>
+#include <utility>
 #include <stdexcept>
 
 namespace ncinterp::plot {
@@ -192,11 +194,19 @@ class PanelPainter {
     pls_.vpor(x0, x1, y0, y1);
     pls_.wind(xr.low, xr.high, yr.low, yr.high);
 
-    const std::string xopt = p.x_scale == Scale::kLog10 ? "l" : "";
-    const std::string yopt = p.y_scale == Scale::kLog10 ? "l" : "";
+    // Log axes: PLplot ticks every decade, and its own labels would overlap on a long
+    // range, so a label function writes 10^n only every `step` decades (about 60 px per
+    // label along x, 28 px along y); log y labels are written across the axis, where a
+    // short "10^-6" fits. Linear axes: PLplot's own ticks and labels, y along the axis.
+    const std::string xopt = p.x_scale == Scale::kLog10 ? "lo" : "";
+    const std::string yopt = p.y_scale == Scale::kLog10 ? "lov" : "";
+    steps_ = {decade_step(p.x_scale, xr, (x1 - x0) * fig_.width_px / 60.0),
+              decade_step(p.y_scale, yr, (y1 - y0) * fig_.height_px / 28.0)};
+    pls_.slabelfunc(&PanelPainter::decade_label, &steps_);
+    const double xtick = 0.0, ytick = 0.0;
     pls_.col0(kGridColour);
     pls_.width(0.5);
-    pls_.box(("g" + xopt).c_str(), 0.0, 0, ("g" + yopt).c_str(), 0.0, 0);
+    pls_.box(("g" + xopt).c_str(), xtick, 0, ("g" + yopt).c_str(), ytick, 0);
 
     for (const Band& b : p.bands) {
       if (!on_axis(b.y_low, p.y_scale) || !on_axis(b.y_high, p.y_scale)) continue;
@@ -219,12 +229,31 @@ class PanelPainter {
 
     pls_.col0(colour_index(Colour::kBlack));
     pls_.width(1.0);
-    pls_.box(("bcnst" + xopt).c_str(), 0.0, 0, ("bcnst" + yopt).c_str(), 0.0, 0);
+    pls_.box(("bcnst" + xopt).c_str(), xtick, 0, ("bcnst" + yopt).c_str(), ytick, 0);
     pls_.lab(p.x_label.c_str(), p.y_label.c_str(), p.title.c_str());
     if (legend_entries(p) > 0) draw_legend(p, (y1 - y0) * fig_.height_px);
   }
 
  private:
+  // Decades between two labels of a log axis, so that at most `labels` labels fit.
+  static int decade_step(Scale s, const Range& r, double labels) {
+    if (s != Scale::kLog10) return 1;
+    return static_cast<int>(std::max(1.0, std::ceil((r.high - r.low) / std::max(1.0, labels))));
+  }
+
+  // PLplot's custom label callback (box option "o", used on log axes only): "10^n" in
+  // PLplot's superscript escapes at every step-th decade, nothing elsewhere.
+  static void decade_label(PLINT axis, PLFLT value, char* label, PLINT length, PLPointer data) {
+    const auto* steps = static_cast<const std::pair<int, int>*>(data);
+    const int step = axis == PL_X_AXIS ? steps->first : steps->second;
+    const long decade = std::lround(value);
+    if (decade % step != 0) {
+      label[0] = '\0';
+      return;
+    }
+    std::snprintf(label, static_cast<size_t>(length), "10#u%ld#d", decade);
+  }
+
   static int legend_entries(const Panel& p) {
     if (!p.legend) return 0;
     int n = 0;
@@ -301,6 +330,7 @@ class PanelPainter {
 
   plstream& pls_;
   const Figure& fig_;
+  std::pair<int, int> steps_{1, 1};  // decades per label on x and y (log axes)
 };
 
 std::mutex g_plplot_mutex;
