@@ -186,8 +186,9 @@ module tape_decoder #(
   logic                   signed_word, fractional_word, word_complete;
   logic [3:0]             frac_limit;
   logic [WideWidth-1:0]   limit, num_next;
-  // The arc block being prepared (StArc): result in the clock with arc_done.
-  logic                   arc_done, arc_err;
+  // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
+  // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
+  logic                   in_arc, arc_done, arc_err;
   logic [3:0]             arc_code;
   logic [StepWidth-1:0]   arc_step;
 
@@ -199,7 +200,8 @@ module tape_decoder #(
     end
   endfunction
 
-  assign take = in_valid_q && state_q != StHold && state_q != StArc && state_q != StError;
+  assign in_arc = state_q == StArc;
+  assign take = in_valid_q && state_q != StHold && !in_arc && state_q != StError;
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !in_valid_q &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
@@ -390,7 +392,8 @@ module tape_decoder #(
                     end else begin
                       // A line waits for the buffer (cleared at the handoff); an arc is
                       // prepared first.
-                      state_d = motion_d == 2'd1 ? StHold : StArc;
+                      if (motion_d == 2'd1) state_d = StHold;
+                      else state_d = StArc;
                       k_d = bit_length(dx_d | dy_d);
                     end
                   end else begin
@@ -462,7 +465,7 @@ module tape_decoder #(
   // sums S = F * N. Its result stays in its registers until the next arc starts, i.e. for
   // the whole HOLD that follows.
   arc_prepare #(.IncWidth(IncWidth), .FeedWidth(FeedWidth), .KWidth(KWidth)) u_arc (
-    .clk_i, .rst_ni, .run_i(state_q == StArc),
+    .clk_i, .rst_ni, .run_i(in_arc),
     .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
     .ccw_i(motion_q == 2'd3), .feed_i(feed_q),
