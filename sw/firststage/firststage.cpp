@@ -71,9 +71,11 @@ void validate_options(const FirstStageOptions& o) {
         ": raise --tol or use a finer --blu");
 }
 
-uint64_t inverse_time_feed(double length_mm, double feed_mm_min, unsigned feed_frac_digits) {
-  const double scale = std::pow(10.0, feed_frac_digits);
+uint64_t inverse_time_feed(double length_mm, double feed_mm_min, const tape::Format& format) {
+  const double scale = std::pow(10.0, format.feed_frac_digits);
   const double f = std::floor(feed_mm_min / length_mm * scale * (1.0 + 1e-15));
+  const uint64_t register_max = (uint64_t{1} << format.feed_width) - 1;
+  if (!(f < static_cast<double>(register_max))) return register_max;
   return f < 1.0 ? 1 : static_cast<uint64_t>(f);
 }
 
@@ -173,6 +175,7 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
 tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o) {
   tape::Program prog;
   prog.blocks.reserve(r.moves.size());
+  const tape::Format format = tape_format(o);
   GridPoint cur = r.start;
   uint32_t n = 0;
   for (const Move& m : r.moves) {
@@ -187,7 +190,7 @@ tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o
       b.i = m.centre.x - cur.x;
       b.j = m.centre.y - cur.y;
     }
-    b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), o.feed_mm_min, 3);
+    b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), o.feed_mm_min, format);
     prog.blocks.push_back(b);
     cur = m.to;
   }

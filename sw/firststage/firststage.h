@@ -55,9 +55,12 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
 // Moves -> tape program (G01/G02/G03 blocks with inverse-time F, N from 1).
 tape::Program make_program(const FirstStageResult& result, const FirstStageOptions& options);
 tape::Format tape_format(const FirstStageOptions& options);
-// Inverse-time feed in 10^-3 1/min for a move of `length_mm` at `feed_mm_min`: rounded
-// down (the block is never faster than the feed), at least 1 (0.001 1/min).
-uint64_t inverse_time_feed(double length_mm, double feed_mm_min, unsigned feed_frac_digits);
+// Inverse-time feed in 10^-FeedFracDigits 1/min for a move of `length_mm` at
+// `feed_mm_min`: rounded down (the block is never faster than the feed), at least 1. A
+// block too short for its feed would need F beyond the F register: it gets the largest F
+// (1/F = 60 s / ((2^FeedWidth - 1) 10^-FeedFracDigits), 14 us at the defaults), so it is
+// a little slower than programmed, never faster; so short a block saturates anyway.
+uint64_t inverse_time_feed(double length_mm, double feed_mm_min, const tape::Format& format);
 // Length of a move in mm (arc length for arcs).
 double move_length_mm(GridPoint from, const Move& move, double blu_mm);
 

@@ -202,6 +202,18 @@ TEST(ChordCounts, TwoSidedNearLowerBoundAndBeatsGrbl) {
   }
 }
 
+// Inverse-time F: rounded down (never faster than the feed), and a block too short for its
+// feed gets the largest F the register holds instead of an unwritable tape.
+TEST(Feed, RoundedDownAndCappedAtTheRegister) {
+  const tape::Format f;  // F: 32 bits, 3 fraction digits
+  EXPECT_EQ(firststage::inverse_time_feed(3.0, 1000.0, f), 333333u);  // 333.3333 1/min
+  EXPECT_EQ(firststage::inverse_time_feed(1e9, 1.0, f), 1u);           // at least 1
+  EXPECT_EQ(firststage::inverse_time_feed(0.001, 100000.0, f), 0xffffffffu);
+  tape::Format narrow = f;
+  narrow.feed_width = 20;
+  EXPECT_EQ(firststage::inverse_time_feed(0.001, 100000.0, narrow), (1u << 20) - 1);
+}
+
 TEST(Closure, ThousandsOfBlocksNoDrift) {
   // 400 S-bends of tangent arcs: every block's increments sum to the programmed end.
   std::vector<Segment> segs;
