@@ -1,7 +1,6 @@
 // The sweep's figure from its rows (see sweep_plot.h).
 #include "sweep_plot.h"
 
-#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -31,20 +30,12 @@ Series series(const std::vector<SweepRow>& rows, std::string label, Colour colou
 
 std::optional<double> value(const Measured& m) { return m.value; }
 
-bool all_measured(const SweepRow& r) {
-  for (const InputResult& in : r.inputs)
-    if (!in.measured()) return false;
-  return !r.inputs.empty();
-}
-
 // Worst (largest magnitude) of a per-input value, when every input was measured.
-std::function<std::optional<double>(const SweepRow&)> worst(double (*get)(const InputResult&), double scale) {
-  return [get, scale](const SweepRow& r) -> std::optional<double> {
-    if (!all_measured(r)) return std::nullopt;
-    double w = 0.0;
-    for (const InputResult& in : r.inputs)
-      if (std::fabs(get(in)) > std::fabs(w)) w = get(in);
-    return w * scale;
+std::function<std::optional<double>(const SweepRow&)> worst(double InputResult::*field, double scale) {
+  return [field, scale](const SweepRow& r) -> std::optional<double> {
+    const std::optional<double> w = r.worst(field);
+    if (!w) return std::nullopt;
+    return *w * scale;
   };
 }
 
@@ -99,9 +90,9 @@ plot::Figure sweep_figure(const std::vector<SweepRow>& rows, const PlotContext& 
   const double um_per_blu = ctx.blu_mm * 1000.0;
   std::vector<Series> errors = {
       series(rows, "interpolator (to the blocks)", Colour::kBlue,
-             worst([](const InputResult& in) { return in.path_error_max_blu; }, um_per_blu)),
+             worst(&InputResult::path_error_max_blu, um_per_blu)),
       series(rows, "total (to the contour)", Colour::kRed,
-             worst([](const InputResult& in) { return in.total_error_max_mm; }, 1000.0))};
+             worst(&InputResult::total_error_max_mm, 1000.0))};
   if (!errors[0].x.empty() || !errors[1].x.empty()) {
     Series tol;  // drawn only beside measured errors
     tol.label = "tolerance delta";
@@ -114,14 +105,13 @@ plot::Figure sweep_figure(const std::vector<SweepRow>& rows, const PlotContext& 
 
   f.panels.push_back(panel("Feed: worst block time vs 1/F", "relative error (%)",
                            {series(rows, "worst block", Colour::kBrown,
-                                   worst([](const InputResult& in) { return in.feed_error_worst; }, 100.0))}));
+                                   worst(&InputResult::feed_error_worst, 100.0))}));
 
   Panel cycles = panel("Simulated clocks", "clocks",
                        {series(rows, "clocks to the end of program", Colour::kBlack, [](const SweepRow& r) -> std::optional<double> {
-                         if (!all_measured(r)) return std::nullopt;
-                         double sum = 0.0;
-                         for (const InputResult& in : r.inputs) sum += static_cast<double>(in.cycles);
-                         return sum;
+                         const std::optional<uint64_t> sum = r.total(&InputResult::cycles);
+                         if (!sum) return std::nullopt;
+                         return static_cast<double>(*sum);
                        })});
   cycles.y_scale = plot::Scale::kLog10;
   f.panels.push_back(std::move(cycles));

@@ -1,7 +1,8 @@
 // One row of the bit-width sweep: everything measured at one register width W.
 // Idea: a value is either measured or absent with the reason it is absent (a tool not on
 // PATH, a failed run, a design too big for the part, a stage not asked for). Nothing is
-// ever estimated to fill a gap, so the table says exactly what was measured.
+// ever estimated to fill a gap, so the table says exactly what was measured; totals over
+// the inputs exist only when every input was measured.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -59,6 +60,13 @@ struct SweepRow {
   std::vector<InputResult> inputs;  // in the order of the sweep's inputs
   SynthResult synth;
   RtlResult rtl;
+
+  // Aggregates over the inputs exist only when every input was measured at this width (a
+  // total over some of them would read as a total over all); else nullopt.
+  std::optional<uint64_t> total(uint64_t InputResult::*field) const;
+  std::optional<double> worst(double InputResult::*field) const;  // largest magnitude, signed
+  // "<file name>: <why>" of the first input not measured; "" when all were.
+  std::string missing_input() const;
 };
 
 }  // namespace ncinterp::sweep

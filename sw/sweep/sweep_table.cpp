@@ -2,7 +2,6 @@
 #include "sweep_table.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -18,34 +17,19 @@ std::string number(double v, const char* format) {
 
 std::string cell(const Measured& m, const char* format) { return m.value ? number(*m.value, format) : m.reason; }
 
-// The first input not measured at this width, as the reason for every total; "" if none.
-std::string missing_input(const SweepRow& row) {
-  for (const InputResult& in : row.inputs)
-    if (!in.measured()) return std::filesystem::path(in.input).filename().string() + ": " + in.failure;
-  return "";
+// A total or worst value over the inputs, or the reason there is none.
+std::string total(const SweepRow& row, uint64_t InputResult::*field) {
+  const std::optional<uint64_t> v = row.total(field);
+  return v ? std::to_string(*v) : row.missing_input();
 }
 
-template <class Get>
-std::string total(const SweepRow& row, Get get) {
-  const std::string missing = missing_input(row);
-  if (!missing.empty()) return missing;
-  uint64_t sum = 0;
-  for (const InputResult& in : row.inputs) sum += get(in);
-  return std::to_string(sum);
-}
-
-template <class Get>
-std::string worst(const SweepRow& row, Get get, const char* format) {
-  const std::string missing = missing_input(row);
-  if (!missing.empty()) return missing;
-  double w = 0.0;
-  for (const InputResult& in : row.inputs)
-    if (std::fabs(get(in)) > std::fabs(w)) w = get(in);
-  return number(w, format);
+std::string worst(const SweepRow& row, double InputResult::*field, const char* format) {
+  const std::optional<double> v = row.worst(field);
+  return v ? number(*v, format) : row.missing_input();
 }
 
 std::string check_cell(const SweepRow& row) {
-  const std::string missing = missing_input(row);
+  const std::string missing = row.missing_input();
   if (!missing.empty()) return missing;
   for (const InputResult& in : row.inputs)
     if (in.violations)
@@ -86,14 +70,14 @@ Table sweep_table(const std::vector<SweepRow>& rows) {
   for (const SweepRow& r : rows) {
     std::vector<std::string> c = {
         std::to_string(r.width),
-        total(r, [](const InputResult& in) { return in.blocks; }),
-        total(r, [](const InputResult& in) { return in.frames; }),
-        worst(r, [](const InputResult& in) { return in.path_error_max_blu; }, "%.4f"),
-        worst(r, [](const InputResult& in) { return in.total_error_max_mm; }, "%.5f"),
+        total(r, &InputResult::blocks),
+        total(r, &InputResult::frames),
+        worst(r, &InputResult::path_error_max_blu, "%.4f"),
+        worst(r, &InputResult::total_error_max_mm, "%.5f"),
         check_cell(r),
-        worst(r, [](const InputResult& in) { return in.feed_error_worst; }, "%.3e"),
-        total(r, [](const InputResult& in) { return in.saturated_blocks; }),
-        total(r, [](const InputResult& in) { return in.cycles; }),
+        worst(r, &InputResult::feed_error_worst, "%.3e"),
+        total(r, &InputResult::saturated_blocks),
+        total(r, &InputResult::cycles),
         r.rtl.summary,
         cell(r.synth.cells, "%.0f"),
         cell(r.synth.flip_flops, "%.0f"),
