@@ -10,11 +10,14 @@
 // among y0, y1 and (ccw ? -dx : dx), and the move is not zero; the end outside the
 // increment register (|x1| or |y1| > 2^W - 1, code 4). The radius check (code 11) is
 // arc_radius_check.sv. The golden twin is sc_model/golden/arc_geometry.cpp.
-// Timing: purely combinational.
+// Timing: purely combinational. With enable_i low every output is 0: the logic is only
+// evaluated while an arc is prepared, which keeps the verilated model fast (a gate per
+// output in hardware).
 module arc_geometry #(
   parameter int IncWidth = 16,
   parameter int KWidth   = $clog2(IncWidth + 1)
 ) (
+  input  logic                enable_i,  // the outputs are used in this clock
   input  logic [IncWidth-1:0] dx_i,
   input  logic                dx_neg_i,
   input  logic [IncWidth-1:0] dy_i,
@@ -47,50 +50,55 @@ module arc_geometry #(
   logic                     x_plus, x_minus, y_plus, y_minus, moves, in_quadrant, too_wide;
 
   always_comb begin
-    x0 = i_neg_i ? SWidth'(i_i) : -(SWidth'(i_i));  // start - centre = -I
-    y0 = j_neg_i ? SWidth'(j_i) : -(SWidth'(j_i));
-    dx = dx_neg_i ? -(SWidth'(dx_i)) : SWidth'(dx_i);
-    dy = dy_neg_i ? -(SWidth'(dy_i)) : SWidth'(dy_i);
-    x1 = x0 + dx;
-    y1 = y0 + dy;
-    x1_mag = x1[SWidth-1] ? -x1 : x1;
-    y1_mag = y1[SWidth-1] ? -y1 : y1;
-
-    // Votes for the quadrant's signs: the ends, and the motion (a ccw arc in the quadrant
-    // (sx, sy) has sign(dy) = sx and sign(dx) = -sy; a cw arc the opposite).
-    x_plus  = (x0 > 0) || (x1 > 0) || (ccw_i ? dy > 0 : dy < 0);
-    x_minus = (x0 < 0) || (x1 < 0) || (ccw_i ? dy < 0 : dy > 0);
-    y_plus  = (y0 > 0) || (y1 > 0) || (ccw_i ? dx < 0 : dx > 0);
-    y_minus = (y0 < 0) || (y1 < 0) || (ccw_i ? dx > 0 : dx < 0);
-    moves       = dx_i != '0 || dy_i != '0;
-    in_quadrant = moves && !(x_plus && x_minus) && !(y_plus && y_minus);
-    too_wide    = x1_mag[SWidth-1:IncWidth] != '0 || y1_mag[SWidth-1:IncWidth] != '0;
-
-    error_o      = 1'b1;
-    error_code_o = ErrZeroRadius;
-    if (i_i == '0 && j_i == '0) begin
-      error_code_o = ErrZeroRadius;
-    end else if (!in_quadrant) begin
-      error_code_o = ErrCrossQuadrant;
-    end else if (too_wide) begin
-      error_code_o = ErrTooWide;
-    end else begin
-      error_o = 1'b0;
-    end
-  end
-
-  assign x0_o     = i_i;
-  assign y0_o     = j_i;
-  assign x1_o     = x1_mag[IncWidth-1:0];
-  assign y1_o     = y1_mag[IncWidth-1:0];
-  assign grow_x_o = x1_mag > SWidth'(i_i);
-  assign grow_y_o = y1_mag > SWidth'(j_i);
-
-  // k: position of the highest 1 of any magnitude, plus one (a priority encoder).
-  always_comb begin
+    x0 = '0;  y0 = '0;  dx = '0;  dy = '0;  x1 = '0;  y1 = '0;  x1_mag = '0;  y1_mag = '0;
+    x_plus = 1'b0;  x_minus = 1'b0;  y_plus = 1'b0;  y_minus = 1'b0;
+    moves = 1'b0;  in_quadrant = 1'b0;  too_wide = 1'b0;
+    x0_o = '0;  y0_o = '0;  x1_o = '0;  y1_o = '0;  grow_x_o = 1'b0;  grow_y_o = 1'b0;
     k_o = '0;
-    for (int b = 0; b < IncWidth; b++) begin
-      if (i_i[b] || j_i[b] || x1_o[b] || y1_o[b]) k_o = KWidth'(b + 1);
+    error_o = 1'b0;
+    error_code_o = ErrZeroRadius;
+    if (enable_i) begin
+      x0 = i_neg_i ? SWidth'(i_i) : -(SWidth'(i_i));  // start - centre = -I
+      y0 = j_neg_i ? SWidth'(j_i) : -(SWidth'(j_i));
+      dx = dx_neg_i ? -(SWidth'(dx_i)) : SWidth'(dx_i);
+      dy = dy_neg_i ? -(SWidth'(dy_i)) : SWidth'(dy_i);
+      x1 = x0 + dx;
+      y1 = y0 + dy;
+      x1_mag = x1[SWidth-1] ? -x1 : x1;
+      y1_mag = y1[SWidth-1] ? -y1 : y1;
+
+      // Votes for the quadrant's signs: the ends, and the motion (a ccw arc in the quadrant
+      // (sx, sy) has sign(dy) = sx and sign(dx) = -sy; a cw arc the opposite).
+      x_plus  = (x0 > 0) || (x1 > 0) || (ccw_i ? dy > 0 : dy < 0);
+      x_minus = (x0 < 0) || (x1 < 0) || (ccw_i ? dy < 0 : dy > 0);
+      y_plus  = (y0 > 0) || (y1 > 0) || (ccw_i ? dx < 0 : dx > 0);
+      y_minus = (y0 < 0) || (y1 < 0) || (ccw_i ? dx > 0 : dx < 0);
+      moves       = dx_i != '0 || dy_i != '0;
+      in_quadrant = moves && !(x_plus && x_minus) && !(y_plus && y_minus);
+      too_wide    = x1_mag[SWidth-1:IncWidth] != '0 || y1_mag[SWidth-1:IncWidth] != '0;
+
+      error_o      = 1'b1;
+      error_code_o = ErrZeroRadius;
+      if (i_i == '0 && j_i == '0) begin
+        error_code_o = ErrZeroRadius;
+      end else if (!in_quadrant) begin
+        error_code_o = ErrCrossQuadrant;
+      end else if (too_wide) begin
+        error_code_o = ErrTooWide;
+      end else begin
+        error_o = 1'b0;
+      end
+
+      x0_o     = i_i;
+      y0_o     = j_i;
+      x1_o     = x1_mag[IncWidth-1:0];
+      y1_o     = y1_mag[IncWidth-1:0];
+      grow_x_o = x1_mag > SWidth'(i_i);
+      grow_y_o = y1_mag > SWidth'(j_i);
+      // k: position of the highest 1 of any magnitude, plus one (a priority encoder).
+      for (int b = 0; b < IncWidth; b++) begin
+        if (i_i[b] || j_i[b] || x1_o[b] || y1_o[b]) k_o = KWidth'(b + 1);
+      end
     end
   end
 

@@ -36,7 +36,11 @@ module arc_prepare #(
   output logic                 done_o,      // the result is final in this clock
   output logic                 err_o,       // ... and it is an error
   output logic [3:0]           err_code_o,
-  output logic [StepWidth-1:0] step_o       // S = F * N (valid at done without error)
+  output logic [StepWidth-1:0] step_o,      // S = F * N (valid at done without error)
+  // The arc's geometry for the player's circle DDA (valid in clocks with run_i).
+  output logic [KWidth-1:0]    k_o,
+  output logic                 grow_x_o,
+  output logic                 grow_y_o
 );
 
   localparam logic [3:0] ErrOffCircle = 4'd11;
@@ -61,6 +65,7 @@ module arc_prepare #(
   assign start = run_i && !running_q;
 
   arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth)) u_geometry (
+    .enable_i(run_i),
     .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
     .x0_o(x0), .y0_o(y0), .x1_o(x1), .y1_o(y1), .grow_x_o(grow_x), .grow_y_o(grow_y),
     .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
@@ -117,6 +122,9 @@ module arc_prepare #(
     end
   end
 
-  assign step_o = step_q;
+  assign step_o   = step_q;
+  assign k_o      = k;
+  assign grow_x_o = grow_x;
+  assign grow_y_o = grow_y;
 
 endmodule

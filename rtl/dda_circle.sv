@@ -11,6 +11,9 @@
 // when both are 0 (done_o). The golden twin is sc_model/golden/circle_dda.h.
 // Timing: load_i loads the block at an edge where no iteration happens; an iteration
 // happens at an edge with strobe_i while !done_o and its pulses show after that edge.
+// The next-state logic is evaluated only at a load, an iteration or to clear the step
+// pulses (the registers' enable): most clocks of a part have none, and this keeps the
+// verilated model fast.
 module dda_circle #(
   parameter int IncWidth = 16,
   parameter int KWidth   = $clog2(IncWidth + 1)
@@ -53,77 +56,94 @@ module dda_circle #(
   // y_first_q: this iteration steps Y before X; toggles every iteration (X first after load).
   logic                y_first_q, y_first_d;
 
-  logic                iterate;
-  logic [IncWidth:0]   kpow_load;
+  // One axis's half of an iteration: axis A's integrator adds |b|, the other coordinate's
+  // magnitude; a carry out of bit k is a step of A, which moves |a| one BLU (up if A's
+  // magnitude grows along the arc, else down) and uses one of A's remaining pulses. When b
+  // has no pulses left, bit k-1 of the addend is forced on (at least half a step per
+  // iteration), so A's last pulses come out even where |b| is 0 (an arc ending on an
+  // axis). An axis with no pulses left never steps. Result: {step, acc, mag, cnt}.
+  localparam int HalfWidth = 1 + 3 * IncWidth;
+  function automatic logic [HalfWidth-1:0] half_step(
+      input logic [IncWidth:0]   kpow,        // 2^k (one-hot)
+      input logic [IncWidth-1:0] acc,         // A's integrator, < 2^k
+      input logic [IncWidth-1:0] other_mag,   // |b|, < 2^k
+      input logic                other_done,  // b has no pulses left
+      input logic [IncWidth-1:0] mag,         // |a|
+      input logic                grow,        // |a| grows at A's steps
+      input logic [IncWidth-1:0] cnt);        // A's pulses left
+    logic [IncWidth:0]   addend, sum;
+    logic                step;
+    logic [IncWidth-1:0] acc_new, mag_new, cnt_new;
+    addend = {1'b0, other_mag};
+    if (other_done) addend = addend | (kpow >> 1);
+    sum     = {1'b0, acc} + addend;  // < 2^(k+1)
+    step    = |(sum & kpow) && cnt != '0;
+    acc_new = sum[IncWidth-1:0] & ~kpow[IncWidth-1:0];  // clearing bit k subtracts 2^k
+    mag_new = mag;
+    cnt_new = cnt;
+    if (step) begin
+      mag_new = grow ? mag + 1'b1 : mag - 1'b1;
+      cnt_new = cnt - 1'b1;
+    end
+    half_step = {step, acc_new, mag_new, cnt_new};
+  endfunction
 
-  // The two half-steps of an iteration: "a" is the axis going first, "b" the second.
-  logic                a_step, b_step;
-  logic [IncWidth-1:0] a_acc, a_other_mag, a_mag, a_cnt, a_acc_new, a_mag_new, a_cnt_new;
-  logic [IncWidth-1:0] b_acc, b_mag, b_cnt, b_acc_new, b_mag_new, b_cnt_new;
-  logic                a_grow, a_other_done, b_grow;
+  logic                   iterate, active;
+  logic [IncWidth:0]      kpow_load;
+  // The two half-steps of an iteration: "first" is the axis going first (Y when
+  // y_first_q), "second" the other, integrating the magnitude the first has just moved.
+  logic                   first_step, second_step;
+  logic [IncWidth-1:0]    first_acc, first_mag, first_cnt, second_acc, second_mag, second_cnt;
 
   assign iterate   = strobe_i && !done_o;
+  assign active    = load_i || iterate || step_x_q || step_y_q;
   assign kpow_load = (IncWidth + 1)'(1) << k_i;
 
-  // Operands of the first half-step: registers only (no combinational loop).
   always_comb begin
-    if (y_first_q) begin
-      a_acc = acc_y_q;  a_mag = mag_y_q;  a_cnt = cnt_y_q;  a_grow = grow_y_q;
-      a_other_mag = mag_x_q;  a_other_done = cnt_x_q == '0;
-      b_acc = acc_x_q;  b_mag = mag_x_q;  b_cnt = cnt_x_q;  b_grow = grow_x_q;
-    end else begin
-      a_acc = acc_x_q;  a_mag = mag_x_q;  a_cnt = cnt_x_q;  a_grow = grow_x_q;
-      a_other_mag = mag_y_q;  a_other_done = cnt_y_q == '0;
-      b_acc = acc_y_q;  b_mag = mag_y_q;  b_cnt = cnt_y_q;  b_grow = grow_y_q;
-    end
-  end
-
-  circle_half_step #(.Width(IncWidth)) u_first (
-    .kpow_i(kpow_q), .acc_i(a_acc), .other_mag_i(a_other_mag), .other_done_i(a_other_done),
-    .mag_i(a_mag), .grow_i(a_grow), .cnt_i(a_cnt),
-    .step_o(a_step), .acc_o(a_acc_new), .mag_o(a_mag_new), .cnt_o(a_cnt_new)
-  );
-
-  // The second half-step integrates the magnitude the first one has just moved.
-  circle_half_step #(.Width(IncWidth)) u_second (
-    .kpow_i(kpow_q), .acc_i(b_acc), .other_mag_i(a_mag_new), .other_done_i(a_cnt_new == '0),
-    .mag_i(b_mag), .grow_i(b_grow), .cnt_i(b_cnt),
-    .step_o(b_step), .acc_o(b_acc_new), .mag_o(b_mag_new), .cnt_o(b_cnt_new)
-  );
-
-  assign carry_x_o = iterate && (y_first_q ? b_step : a_step);
-  assign carry_y_o = iterate && (y_first_q ? a_step : b_step);
-
-  always_comb begin
-    kpow_d    = kpow_q;
-    acc_x_d   = acc_x_q;   acc_y_d  = acc_y_q;
-    mag_x_d   = mag_x_q;   mag_y_d  = mag_y_q;
-    cnt_x_d   = cnt_x_q;   cnt_y_d  = cnt_y_q;
-    grow_x_d  = grow_x_q;  grow_y_d = grow_y_q;
-    dir_x_d   = dir_x_q;   dir_y_d  = dir_y_q;
-    y_first_d = y_first_q;
-    step_x_d  = 1'b0;
-    step_y_d  = 1'b0;
-    if (load_i) begin
-      kpow_d    = kpow_load;
-      acc_x_d   = kpow_load[IncWidth:1];
-      acc_y_d   = kpow_load[IncWidth:1];
-      mag_x_d   = x_i;       mag_y_d  = y_i;
-      cnt_x_d   = cnt_x_i;   cnt_y_d  = cnt_y_i;
-      grow_x_d  = grow_x_i;  grow_y_d = grow_y_i;
-      dir_x_d   = dir_x_i;   dir_y_d  = dir_y_i;
-      y_first_d = 1'b0;
-    end else if (iterate) begin
-      if (y_first_q) begin
-        acc_y_d = a_acc_new;  mag_y_d = a_mag_new;  cnt_y_d = a_cnt_new;
-        acc_x_d = b_acc_new;  mag_x_d = b_mag_new;  cnt_x_d = b_cnt_new;
-      end else begin
-        acc_x_d = a_acc_new;  mag_x_d = a_mag_new;  cnt_x_d = a_cnt_new;
-        acc_y_d = b_acc_new;  mag_y_d = b_mag_new;  cnt_y_d = b_cnt_new;
+    {kpow_d, acc_x_d, acc_y_d, mag_x_d, mag_y_d, cnt_x_d, cnt_y_d, grow_x_d, grow_y_d, dir_x_d,
+     dir_y_d, y_first_d, step_x_d, step_y_d, carry_x_o, carry_y_o, first_step, first_acc,
+     first_mag, first_cnt, second_step, second_acc, second_mag, second_cnt} = '0;
+    if (active) begin
+      kpow_d    = kpow_q;
+      acc_x_d   = acc_x_q;   acc_y_d  = acc_y_q;
+      mag_x_d   = mag_x_q;   mag_y_d  = mag_y_q;
+      cnt_x_d   = cnt_x_q;   cnt_y_d  = cnt_y_q;
+      grow_x_d  = grow_x_q;  grow_y_d = grow_y_q;
+      dir_x_d   = dir_x_q;   dir_y_d  = dir_y_q;
+      y_first_d = y_first_q;
+      if (load_i) begin
+        kpow_d    = kpow_load;
+        acc_x_d   = kpow_load[IncWidth:1];
+        acc_y_d   = kpow_load[IncWidth:1];
+        mag_x_d   = x_i;       mag_y_d  = y_i;
+        cnt_x_d   = cnt_x_i;   cnt_y_d  = cnt_y_i;
+        grow_x_d  = grow_x_i;  grow_y_d = grow_y_i;
+        dir_x_d   = dir_x_i;   dir_y_d  = dir_y_i;
+        y_first_d = 1'b0;
+      end else if (iterate) begin
+        if (y_first_q) begin
+          {first_step, first_acc, first_mag, first_cnt} =
+              half_step(kpow_q, acc_y_q, mag_x_q, cnt_x_q == '0, mag_y_q, grow_y_q, cnt_y_q);
+          {second_step, second_acc, second_mag, second_cnt} =
+              half_step(kpow_q, acc_x_q, first_mag, first_cnt == '0, mag_x_q, grow_x_q, cnt_x_q);
+          acc_y_d = first_acc;   mag_y_d = first_mag;   cnt_y_d = first_cnt;
+          acc_x_d = second_acc;  mag_x_d = second_mag;  cnt_x_d = second_cnt;
+          carry_y_o = first_step;
+          carry_x_o = second_step;
+        end else begin
+          {first_step, first_acc, first_mag, first_cnt} =
+              half_step(kpow_q, acc_x_q, mag_y_q, cnt_y_q == '0, mag_x_q, grow_x_q, cnt_x_q);
+          {second_step, second_acc, second_mag, second_cnt} =
+              half_step(kpow_q, acc_y_q, first_mag, first_cnt == '0, mag_y_q, grow_y_q, cnt_y_q);
+          acc_x_d = first_acc;   mag_x_d = first_mag;   cnt_x_d = first_cnt;
+          acc_y_d = second_acc;  mag_y_d = second_mag;  cnt_y_d = second_cnt;
+          carry_x_o = first_step;
+          carry_y_o = second_step;
+        end
+        y_first_d = !y_first_q;
+        step_x_d  = carry_x_o;
+        step_y_d  = carry_y_o;
       end
-      y_first_d = !y_first_q;
-      step_x_d  = carry_x_o;
-      step_y_d  = carry_y_o;
     end
   end
 
@@ -137,7 +157,7 @@ module dda_circle #(
       dir_x_q   <= 1'b0;  dir_y_q  <= 1'b0;
       step_x_q  <= 1'b0;  step_y_q <= 1'b0;
       y_first_q <= 1'b0;
-    end else begin
+    end else if (active) begin
       kpow_q    <= kpow_d;
       acc_x_q   <= acc_x_d;   acc_y_q  <= acc_y_d;
       mag_x_q   <= mag_x_d;   mag_y_q  <= mag_y_d;

@@ -57,18 +57,20 @@ module interp_top #(
   localparam int KWidth = $clog2(IncWidth + 1);
   // The feed step S = F * N of a block (N <= 2^(W+1) iterations).
   localparam int StepWidth = FeedWidth + IncWidth + 1;
-  // A decoded block as the buffer stores it: N, motion, dx, dy, i, j (sign + magnitude), S,
-  // and the line DDA's k.
-  localparam int BlockWidth = SeqWidth + 2 + 4 * (IncWidth + 1) + StepWidth + KWidth;
+  // A decoded block as the buffer stores it: N, motion, dx, dy (sign + magnitude), |i|, |j|
+  // (the arc's start about its centre), S, k, and for an arc the growth of |x| and |y|.
+  localparam int BlockWidth = SeqWidth + 2 + 2 * (IncWidth + 1) + 2 * IncWidth + StepWidth +
+                              KWidth + 2;
 
   // Decoder -> buffer.
   logic                   dec_valid, buf_ready;
   logic [SeqWidth-1:0]    dec_n;
   logic [1:0]             dec_motion;
   logic [IncWidth-1:0]    dec_dx, dec_dy, dec_i, dec_j;
-  logic                   dec_dx_neg, dec_dy_neg, dec_i_neg, dec_j_neg;
+  logic                   dec_dx_neg, dec_dy_neg;
   logic [StepWidth-1:0]   dec_step;
   logic [KWidth-1:0]      dec_k;
+  logic                   dec_grow_x, dec_grow_y;
   logic                   dec_end, dec_tape_ended, dec_err;
   logic [3:0]             dec_err_code;
   logic [SeqWidth-1:0]    dec_err_block;
@@ -79,22 +81,11 @@ module interp_top #(
   logic [BlockWidth-1:0]  next_block;
   logic [SeqWidth-1:0]    next_n;
   logic [IncWidth-1:0]    next_dx, next_dy, next_i, next_j;
-  logic                   next_dx_neg, next_dy_neg, next_i_neg, next_j_neg;
+  logic                   next_dx_neg, next_dy_neg;
   logic [1:0]             next_motion;
   logic [StepWidth-1:0]   next_step;
   logic [KWidth-1:0]      next_k;
-  logic                   next_arc;
-
-  // The next arc's geometry for the circle DDA's load. The decoder has already checked the
-  // arc (arc_prepare), so the end point and the error outputs are not needed here.
-  logic [IncWidth-1:0]    arc_x0, arc_y0;
-  logic                   arc_grow_x, arc_grow_y;
-  logic [KWidth-1:0]      arc_k;
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [IncWidth-1:0]    arc_x1, arc_y1;
-  logic                   arc_err;
-  logic [3:0]             arc_err_code;
-  /* verilator lint_on UNUSEDSIGNAL */
+  logic                   next_grow_x, next_grow_y, next_arc;
 
   // Player: one DDA per motion; the idle one has no iterations left and emits nothing.
   logic              load, strobe, finished, saturated;
@@ -121,8 +112,8 @@ module interp_top #(
     .blk_valid_o(dec_valid), .blk_ready_i(buf_ready),
     .blk_n_o(dec_n), .blk_motion_o(dec_motion),
     .blk_dx_o(dec_dx), .blk_dx_neg_o(dec_dx_neg), .blk_dy_o(dec_dy), .blk_dy_neg_o(dec_dy_neg),
-    .blk_i_o(dec_i), .blk_i_neg_o(dec_i_neg), .blk_j_o(dec_j), .blk_j_neg_o(dec_j_neg),
-    .blk_step_o(dec_step), .blk_k_o(dec_k),
+    .blk_i_o(dec_i), .blk_j_o(dec_j),
+    .blk_step_o(dec_step), .blk_k_o(dec_k), .blk_grow_x_o(dec_grow_x), .blk_grow_y_o(dec_grow_y),
     .end_o(dec_end), .tape_ended_o(dec_tape_ended), .err_o(dec_err), .err_code_o(dec_err_code),
     .err_block_o(dec_err_block), .err_offset_o(dec_err_offset)
   );
@@ -131,13 +122,13 @@ module interp_top #(
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i({dec_n, dec_motion, dec_dx_neg, dec_dx, dec_dy_neg, dec_dy,
-                 dec_i_neg, dec_i, dec_j_neg, dec_j, dec_step, dec_k}),
+                 dec_i, dec_j, dec_step, dec_k, dec_grow_x, dec_grow_y}),
     .pop_i(load),
     .out_valid_o(next_valid), .out_block_o(next_block)
   );
 
   assign {next_n, next_motion, next_dx_neg, next_dx, next_dy_neg, next_dy,
-          next_i_neg, next_i, next_j_neg, next_j, next_step, next_k} = next_block;
+          next_i, next_j, next_step, next_k, next_grow_x, next_grow_y} = next_block;
   assign next_arc = next_motion != 2'd1;
 
   // The playing block's iterations are over when both DDAs are idle (only one was loaded).
@@ -163,19 +154,11 @@ module interp_top #(
     .rem_zero_o(line_idle)
   );
 
-  arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth)) u_arc_geometry (
-    .dx_i(next_dx), .dx_neg_i(next_dx_neg), .dy_i(next_dy), .dy_neg_i(next_dy_neg),
-    .i_i(next_i), .i_neg_i(next_i_neg), .j_i(next_j), .j_neg_i(next_j_neg),
-    .ccw_i(next_motion == 2'd3),
-    .x0_o(arc_x0), .y0_o(arc_y0), .x1_o(arc_x1), .y1_o(arc_y1),
-    .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y), .k_o(arc_k),
-    .error_o(arc_err), .error_code_o(arc_err_code)
-  );
-
+  // The arc's start about its centre is (-I, -J): its magnitudes are |I|, |J|.
   dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_circle (
     .clk_i, .rst_ni,
-    .load_i(load && next_arc), .k_i(arc_k), .x_i(arc_x0), .y_i(arc_y0),
-    .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(arc_grow_x), .grow_y_i(arc_grow_y),
+    .load_i(load && next_arc), .k_i(next_k), .x_i(next_i), .y_i(next_j),
+    .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
     .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
     .strobe_i(strobe),
     .carry_x_o(circle_carry_x), .carry_y_o(circle_carry_y),

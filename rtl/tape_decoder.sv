@@ -4,9 +4,10 @@
 // N G M X Y I J F (strict number syntax, docs/interpolator.md section 3), assembles one
 // motion block and holds it (frame_ready_o low) until the block buffer takes it. G and F
 // are modal. An arc block (G02/G03) is first checked and dry-run by arc_prepare.sv, which
-// gives its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k. The first bad frame stops the decoder with an error code, the bad block's N
-// (or the previous one) and the frame's offset; the error is only reported by interp_top
-// once every good block has played.
+// gives its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k.
+// The first bad frame stops the decoder with an error code, the bad block's N (or the
+// previous one) and the frame's offset; the error is only reported by interp_top once every
+// good block has played.
 //
 // Timing: the reader's signals are registered first (so no logic depends on an input
 // combinationally): a frame taken at edge e (frame_valid_i & frame_ready_o) lands in the
@@ -48,12 +49,14 @@ module tape_decoder #(
   output logic [IncWidth-1:0]    blk_dy_o,
   output logic                   blk_dy_neg_o,
   output logic [IncWidth-1:0]    blk_i_o,
-  output logic                   blk_i_neg_o,
   output logic [IncWidth-1:0]    blk_j_o,
-  output logic                   blk_j_neg_o,
   // The feed generator's step S: F << k for a line, F * N for an arc (N < 2^(W+1)).
   output logic [FeedWidth+IncWidth:0]   blk_step_o,
-  output logic [$clog2(IncWidth+1)-1:0] blk_k_o,  // the line DDA's k (line blocks)
+  // k of the block: the line DDA's (bit length of max(|dx|, |dy|)) or the circle DDA's (of
+  // the largest coordinate about the centre); for an arc, whether |x|, |y| grow.
+  output logic [$clog2(IncWidth+1)-1:0] blk_k_o,
+  output logic                   blk_grow_x_o,
+  output logic                   blk_grow_y_o,
   // End of program decoded and its last block handed over; trailing frames are checked.
   output logic                   end_o,
   // The reader has delivered every frame (tape_end_i, registered).
@@ -162,9 +165,12 @@ module tape_decoder #(
   logic [IncWidth-1:0]  dx_q, dx_d, dy_q, dy_d, i_q, i_d, j_q, j_d;
   logic                 dx_neg_q, dx_neg_d, dy_neg_q, dy_neg_d;
   logic                 i_neg_q, i_neg_d, j_neg_q, j_neg_d;
-  // k of the held block: bit length of (|dx| | |dy|) = bit length of max(|dx|, |dy|); the
-  // line DDA runs 2^k iterations. Computed at the LF, so the player does not have to.
+  // k of the held block: for a line the bit length of (|dx| | |dy|) = bit length of
+  // max(|dx|, |dy|) (the line DDA runs 2^k iterations), computed at the LF; for an arc the
+  // circle DDA's k and the growth of |x|, |y|, from arc_prepare's geometry when the arc is
+  // ready. So the player has nothing to compute at the load.
   logic [KWidth-1:0]    k_q, k_d;
+  logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
   // a motion G); the block ends the program (M02/M30).
   logic n_seen_q, n_seen_d, any_word_q, any_word_d;
@@ -177,6 +183,8 @@ module tape_decoder #(
 
   // Combinational helpers.
   logic                   take;         // the frame in the input register is processed
+  logic                   update;       // the parser's registers change at this edge
+  state_e                 state_next;   // the state after this edge
   logic                   tape_cut;     // truncated tape found at this edge
   logic [6:0]             ch;           // its character
   logic                   fail;         // an error is found at this edge
@@ -188,9 +196,10 @@ module tape_decoder #(
   logic [WideWidth-1:0]   limit, num_next;
   // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
   // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
-  logic                   in_arc, arc_done, arc_err;
+  logic                   in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
   logic [3:0]             arc_code;
   logic [StepWidth-1:0]   arc_step;
+  logic [KWidth-1:0]      arc_k;
 
   // Bit length of a value (position of its highest 1 plus one; 0 for 0).
   function automatic logic [KWidth-1:0] bit_length(input logic [IncWidth-1:0] value);
@@ -206,245 +215,262 @@ module tape_decoder #(
   assign tape_cut = tape_end_q && !in_valid_q &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
   assign ch   = in_frame_q[6:0];
+  assign update = take || in_arc || state_q == StHold || tape_cut;
+  assign state_next = update ? state_d : state_q;
 
   always_comb begin
-    state_d       = state_q;
-    frame_count_d = frame_count_q;
-    word_d        = word_q;
-    num_state_d   = num_state_q;
-    num_d         = num_q;
-    neg_d         = neg_q;
-    frac_count_d  = frac_count_q;
-    word_offset_d = word_offset_q;
-    n_d           = n_q;
-    motion_d      = motion_q;
-    feed_d        = feed_q;
-    dx_d = dx_q;  dx_neg_d = dx_neg_q;
-    dy_d = dy_q;  dy_neg_d = dy_neg_q;
-    i_d  = i_q;   i_neg_d  = i_neg_q;
-    j_d  = j_q;   j_neg_d  = j_neg_q;
-    n_seen_d      = n_seen_q;
-    any_word_d    = any_word_q;
-    motion_blk_d  = motion_blk_q;
-    end_blk_d     = end_blk_q;
-    err_code_d    = err_code_q;
-    err_block_d   = err_block_q;
-    err_offset_d  = err_offset_q;
-    k_d           = k_q;
-    fail          = 1'b0;
-    fail_code     = ErrParity;
-    fail_offset   = frame_count_q;
-    word_ok       = 1'b1;
-    signed_word     = 1'b0;
-    fractional_word = 1'b0;
-    frac_limit      = FracCount;
-    limit           = IncLimit;
-    word_complete   = 1'b0;
-    num_next        = '0;
+    // Clocks without an update (most clocks: the reader is slow) evaluate nothing here:
+    // the parser's registers keep their values (the always_ff's enable), so the next-state
+    // values are left at 0, which keeps the verilated model fast.
+    {state_d, frame_count_d, word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d,
+     n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
+     n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
+     grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, signed_word, fractional_word,
+     frac_limit, limit, word_complete, num_next} = '0;
+    if (update) begin
+      state_d       = state_q;
+      frame_count_d = frame_count_q;
+      word_d        = word_q;
+      num_state_d   = num_state_q;
+      num_d         = num_q;
+      neg_d         = neg_q;
+      frac_count_d  = frac_count_q;
+      word_offset_d = word_offset_q;
+      n_d           = n_q;
+      motion_d      = motion_q;
+      feed_d        = feed_q;
+      dx_d = dx_q;  dx_neg_d = dx_neg_q;
+      dy_d = dy_q;  dy_neg_d = dy_neg_q;
+      i_d  = i_q;   i_neg_d  = i_neg_q;
+      j_d  = j_q;   j_neg_d  = j_neg_q;
+      n_seen_d      = n_seen_q;
+      any_word_d    = any_word_q;
+      motion_blk_d  = motion_blk_q;
+      end_blk_d     = end_blk_q;
+      err_code_d    = err_code_q;
+      err_block_d   = err_block_q;
+      err_offset_d  = err_offset_q;
+      k_d           = k_q;
+      grow_x_d      = grow_x_q;
+      grow_y_d      = grow_y_q;
+      fail          = 1'b0;
+      fail_code     = ErrParity;
+      fail_offset   = frame_count_q;
+      word_ok       = 1'b1;
+      signed_word     = 1'b0;
+      fractional_word = 1'b0;
+      frac_limit      = FracCount;
+      limit           = IncLimit;
+      word_complete   = 1'b0;
+      num_next        = '0;
 
-    if (take) begin
-      frame_count_d = frame_count_q + 1'b1;
-      // Properties of the word being read (computed only when a frame is processed).
-      signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
-      fractional_word = signed_word || word_q == WordF;
-      frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
-      unique case (word_q)
-        WordN:        limit = SeqLimit;
-        WordG, WordM: limit = CodeLimit;
-        WordF:        limit = FeedLimit;
-        default:      limit = IncLimit;
-      endcase
-      word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
-                                      : (num_state_q == NumInt);
-      num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(ch[3:0]);  // *10 + d
-      if (^in_frame_q) begin
-        fail = 1'b1;  // odd parity
-      end else begin
-        unique case (state_q)
-          StLeader:  if (ch == ChPercent) state_d = StBody;
-          StComment: if (ch == ChClose) state_d = StBody;
-          StEnd: begin
-            if (!(ch == ChPercent || ch == ChNul || ch == ChCr || ch == ChLf || ch == ChSpace)) begin
-              fail = 1'b1;
-              fail_code = ErrAfterEnd;
+      if (take) begin
+        frame_count_d = frame_count_q + 1'b1;
+        // Properties of the word being read (computed only when a frame is processed).
+        signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
+        fractional_word = signed_word || word_q == WordF;
+        frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
+        unique case (word_q)
+          WordN:        limit = SeqLimit;
+          WordG, WordM: limit = CodeLimit;
+          WordF:        limit = FeedLimit;
+          default:      limit = IncLimit;
+        endcase
+        word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
+                                        : (num_state_q == NumInt);
+        num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(ch[3:0]);  // *10 + d
+        if (^in_frame_q) begin
+          fail = 1'b1;  // odd parity
+        end else begin
+          unique case (state_q)
+            StLeader:  if (ch == ChPercent) state_d = StBody;
+            StComment: if (ch == ChClose) state_d = StBody;
+            StEnd: begin
+              if (!(ch == ChPercent || ch == ChNul || ch == ChCr || ch == ChLf || ch == ChSpace)) begin
+                fail = 1'b1;
+                fail_code = ErrAfterEnd;
+              end
             end
-          end
-          StBody: begin
-            if (ch == ChSpace || ch == ChCr) begin
-              // ignored everywhere, even inside a number
-            end else if (ch >= ChZero && ch <= ChNine) begin
-              if (word_q == WordNone) begin
-                fail = 1'b1;
-                fail_code = ErrMalformed;
-              end else if (num_state_q == NumFrac && frac_count_q == frac_limit) begin
-                fail = 1'b1;
-                fail_code = ErrMalformed;  // one fraction digit too many
-              end else if (num_next > limit) begin
-                fail = 1'b1;
-                fail_code = ErrTooWide;
-              end else begin
-                num_d = num_next[NumWidth-1:0];
-                if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
-                else num_state_d = NumInt;
-              end
-            end else if (ch == ChPlus || ch == ChMinus) begin
-              if (!signed_word || num_state_q != NumStart) begin
-                fail = 1'b1;
-                fail_code = ErrMalformed;
-              end else begin
-                neg_d = ch == ChMinus;
-                num_state_d = NumSigned;
-              end
-            end else if (ch == ChDot) begin
-              if (!fractional_word || num_state_q != NumInt) begin
-                fail = 1'b1;
-                fail_code = ErrMalformed;
-              end else begin
-                num_state_d = NumFrac;
-              end
-            end else begin
-              // Any other character ends the word being read: check and commit it first.
-              if (word_q != WordNone) begin
-                word_d = WordNone;
-                if (!word_complete) begin
-                  word_ok = 1'b0;
+            StBody: begin
+              if (ch == ChSpace || ch == ChCr) begin
+                // ignored everywhere, even inside a number
+              end else if (ch >= ChZero && ch <= ChNine) begin
+                if (word_q == WordNone) begin
+                  fail = 1'b1;
+                  fail_code = ErrMalformed;
+                end else if (num_state_q == NumFrac && frac_count_q == frac_limit) begin
+                  fail = 1'b1;
+                  fail_code = ErrMalformed;  // one fraction digit too many
+                end else if (num_next > limit) begin
+                  fail = 1'b1;
+                  fail_code = ErrTooWide;
+                end else begin
+                  num_d = num_next[NumWidth-1:0];
+                  if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
+                  else num_state_d = NumInt;
+                end
+              end else if (ch == ChPlus || ch == ChMinus) begin
+                if (!signed_word || num_state_q != NumStart) begin
+                  fail = 1'b1;
                   fail_code = ErrMalformed;
                 end else begin
-                  unique case (word_q)
-                    WordN: n_d = num_q[SeqWidth-1:0];
-                    WordG: begin
-                      if (num_q >= NumWidth'(1) && num_q <= NumWidth'(3)) begin
-                        motion_d = num_q[1:0];  // G01, G02, G03
-                        motion_blk_d = 1'b1;
-                      end else if (!(num_q == NumWidth'(17) || num_q == NumWidth'(21) ||
-                                     num_q == NumWidth'(91) || num_q == NumWidth'(93))) begin
-                        word_ok = 1'b0;
-                        fail_code = ErrUnsupported;
-                      end
-                    end
-                    WordM: begin
-                      if (num_q == NumWidth'(2) || num_q == NumWidth'(30)) begin
-                        end_blk_d = 1'b1;
-                      end else begin
-                        word_ok = 1'b0;
-                        fail_code = ErrUnsupported;
-                      end
-                    end
-                    WordX: begin
-                      dx_d = num_q[IncWidth-1:0];
-                      dx_neg_d = neg_q;
-                      motion_blk_d = 1'b1;
-                    end
-                    WordY: begin
-                      dy_d = num_q[IncWidth-1:0];
-                      dy_neg_d = neg_q;
-                      motion_blk_d = 1'b1;
-                    end
-                    WordI: begin
-                      i_d = num_q[IncWidth-1:0];
-                      i_neg_d = neg_q;
-                      motion_blk_d = 1'b1;
-                    end
-                    WordJ: begin
-                      j_d = num_q[IncWidth-1:0];
-                      j_neg_d = neg_q;
-                      motion_blk_d = 1'b1;
-                    end
-                    default: feed_d = num_q[FeedWidth-1:0];  // WordF
-                  endcase
+                  neg_d = ch == ChMinus;
+                  num_state_d = NumSigned;
                 end
-                if (!word_ok) begin
+              end else if (ch == ChDot) begin
+                if (!fractional_word || num_state_q != NumInt) begin
                   fail = 1'b1;
-                  fail_offset = word_offset_q;
-                end
-              end
-              // Then the character itself.
-              if (word_ok) begin
-                if (ch == ChN || ch == ChG || ch == ChM || ch == ChX || ch == ChY ||
-                    ch == ChI || ch == ChJ || ch == ChF) begin
-                  if (ch == ChN && n_seen_q) begin
-                    fail = 1'b1;
-                    fail_code = ErrMissingEob;  // a second N: the LF is missing
-                  end else begin
-                    unique case (ch)
-                      ChN:     word_d = WordN;
-                      ChG:     word_d = WordG;
-                      ChM:     word_d = WordM;
-                      ChX:     word_d = WordX;
-                      ChY:     word_d = WordY;
-                      ChI:     word_d = WordI;
-                      ChJ:     word_d = WordJ;
-                      default: word_d = WordF;
-                    endcase
-                    if (ch == ChN) n_seen_d = 1'b1;
-                    any_word_d    = 1'b1;
-                    num_state_d   = NumStart;
-                    num_d         = '0;
-                    neg_d         = 1'b0;
-                    frac_count_d  = '0;
-                    word_offset_d = frame_count_q;
-                  end
-                end else if (ch == ChLf) begin
-                  if (motion_blk_d) begin
-                    if (feed_d == '0) begin
-                      fail = 1'b1;
-                      fail_code = ErrMissingFeed;
-                    end else begin
-                      // A line waits for the buffer (cleared at the handoff); an arc is
-                      // prepared first.
-                      if (motion_d == 2'd1) state_d = StHold;
-                      else state_d = StArc;
-                      k_d = bit_length(dx_d | dy_d);
-                    end
-                  end else begin
-                    if (end_blk_d) state_d = StEnd;
-                    n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
-                    dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
-                    dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
-                  end
-                end else if (ch == ChOpen) begin
-                  state_d = StComment;
-                end else if (ch == ChPercent) begin
-                  fail = 1'b1;
-                  fail_code = any_word_q ? ErrMissingEob : ErrTruncated;
+                  fail_code = ErrMalformed;
                 end else begin
-                  fail = 1'b1;
-                  fail_code = ErrUnknownChar;
+                  num_state_d = NumFrac;
+                end
+              end else begin
+                // Any other character ends the word being read: check and commit it first.
+                if (word_q != WordNone) begin
+                  word_d = WordNone;
+                  if (!word_complete) begin
+                    word_ok = 1'b0;
+                    fail_code = ErrMalformed;
+                  end else begin
+                    unique case (word_q)
+                      WordN: n_d = num_q[SeqWidth-1:0];
+                      WordG: begin
+                        if (num_q >= NumWidth'(1) && num_q <= NumWidth'(3)) begin
+                          motion_d = num_q[1:0];  // G01, G02, G03
+                          motion_blk_d = 1'b1;
+                        end else if (!(num_q == NumWidth'(17) || num_q == NumWidth'(21) ||
+                                       num_q == NumWidth'(91) || num_q == NumWidth'(93))) begin
+                          word_ok = 1'b0;
+                          fail_code = ErrUnsupported;
+                        end
+                      end
+                      WordM: begin
+                        if (num_q == NumWidth'(2) || num_q == NumWidth'(30)) begin
+                          end_blk_d = 1'b1;
+                        end else begin
+                          word_ok = 1'b0;
+                          fail_code = ErrUnsupported;
+                        end
+                      end
+                      WordX: begin
+                        dx_d = num_q[IncWidth-1:0];
+                        dx_neg_d = neg_q;
+                        motion_blk_d = 1'b1;
+                      end
+                      WordY: begin
+                        dy_d = num_q[IncWidth-1:0];
+                        dy_neg_d = neg_q;
+                        motion_blk_d = 1'b1;
+                      end
+                      WordI: begin
+                        i_d = num_q[IncWidth-1:0];
+                        i_neg_d = neg_q;
+                        motion_blk_d = 1'b1;
+                      end
+                      WordJ: begin
+                        j_d = num_q[IncWidth-1:0];
+                        j_neg_d = neg_q;
+                        motion_blk_d = 1'b1;
+                      end
+                      default: feed_d = num_q[FeedWidth-1:0];  // WordF
+                    endcase
+                  end
+                  if (!word_ok) begin
+                    fail = 1'b1;
+                    fail_offset = word_offset_q;
+                  end
+                end
+                // Then the character itself.
+                if (word_ok) begin
+                  if (ch == ChN || ch == ChG || ch == ChM || ch == ChX || ch == ChY ||
+                      ch == ChI || ch == ChJ || ch == ChF) begin
+                    if (ch == ChN && n_seen_q) begin
+                      fail = 1'b1;
+                      fail_code = ErrMissingEob;  // a second N: the LF is missing
+                    end else begin
+                      unique case (ch)
+                        ChN:     word_d = WordN;
+                        ChG:     word_d = WordG;
+                        ChM:     word_d = WordM;
+                        ChX:     word_d = WordX;
+                        ChY:     word_d = WordY;
+                        ChI:     word_d = WordI;
+                        ChJ:     word_d = WordJ;
+                        default: word_d = WordF;
+                      endcase
+                      if (ch == ChN) n_seen_d = 1'b1;
+                      any_word_d    = 1'b1;
+                      num_state_d   = NumStart;
+                      num_d         = '0;
+                      neg_d         = 1'b0;
+                      frac_count_d  = '0;
+                      word_offset_d = frame_count_q;
+                    end
+                  end else if (ch == ChLf) begin
+                    if (motion_blk_d) begin
+                      if (feed_d == '0) begin
+                        fail = 1'b1;
+                        fail_code = ErrMissingFeed;
+                      end else begin
+                        // A line waits for the buffer (cleared at the handoff); an arc is
+                        // prepared first.
+                        if (motion_d == 2'd1) state_d = StHold;
+                        else state_d = StArc;
+                        k_d = bit_length(dx_d | dy_d);
+                      end
+                    end else begin
+                      if (end_blk_d) state_d = StEnd;
+                      n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
+                      dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
+                      dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
+                    end
+                  end else if (ch == ChOpen) begin
+                    state_d = StComment;
+                  end else if (ch == ChPercent) begin
+                    fail = 1'b1;
+                    fail_code = any_word_q ? ErrMissingEob : ErrTruncated;
+                  end else begin
+                    fail = 1'b1;
+                    fail_code = ErrUnknownChar;
+                  end
                 end
               end
             end
-          end
-          default: ;  // StHold, StArc, StError: no frame is processed
-        endcase
-      end
-    end else if (state_q == StArc) begin
-      if (arc_done) begin
-        if (arc_err) begin
-          fail = 1'b1;
-          fail_code = arc_code;
-          fail_offset = frame_count_q - 1'b1;  // the block's LF, the last frame processed
-        end else begin
-          state_d = StHold;
+            default: ;  // StHold, StArc, StError: no frame is processed
+          endcase
         end
+      end else if (state_q == StArc) begin
+        if (arc_done) begin
+          if (arc_err) begin
+            fail = 1'b1;
+            fail_code = arc_code;
+            fail_offset = frame_count_q - 1'b1;  // the block's LF, the last frame processed
+          end else begin
+            state_d  = StHold;
+            k_d      = arc_k;
+            grow_x_d = arc_grow_x;
+            grow_y_d = arc_grow_y;
+          end
+        end
+      end else if (state_q == StHold) begin
+        if (blk_ready_i) begin
+          if (end_blk_q) state_d = StEnd;
+          else state_d = StBody;
+          n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
+          dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
+          dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
+        end
+      end else if (tape_cut) begin
+        fail = 1'b1;
+        fail_code = ErrTruncated;  // at the offset of the frame that never came
       end
-    end else if (state_q == StHold) begin
-      if (blk_ready_i) begin
-        if (end_blk_q) state_d = StEnd;
-        else state_d = StBody;
-        n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
-        dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
-        dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
-      end
-    end else if (tape_cut) begin
-      fail = 1'b1;
-      fail_code = ErrTruncated;  // at the offset of the frame that never came
-    end
 
-    if (fail) begin
-      state_d      = StError;
-      err_code_d   = fail_code;
-      err_block_d  = n_d;  // includes an N committed by this frame
-      err_offset_d = fail_offset;
+      if (fail) begin
+        state_d      = StError;
+        err_code_d   = fail_code;
+        err_block_d  = n_d;  // includes an N committed by this frame
+        err_offset_d = fail_offset;
+      end
     end
   end
 
@@ -458,7 +484,8 @@ module tape_decoder #(
       in_frame_d = frame_i;
       in_valid_d = 1'b1;
     end
-    ready_d = state_d != StError && !((state_d == StHold || state_d == StArc) && in_valid_d);
+    ready_d = state_next != StError &&
+              !((state_next == StHold || state_next == StArc) && in_valid_d);
   end
 
   // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N and
@@ -469,14 +496,13 @@ module tape_decoder #(
     .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
     .ccw_i(motion_q == 2'd3), .feed_i(feed_q),
-    .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .step_o(arc_step)
+    .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .step_o(arc_step),
+    .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
   );
 
   // The parser's registers change only when a frame is processed, an arc is prepared, a
   // held block is handed over or the tape has ended (update); the input register changes
   // every clock.
-  logic update;
-  assign update = take || state_q == StArc || state_q == StHold || tape_cut;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -500,6 +526,8 @@ module tape_decoder #(
       i_q  <= '0;  i_neg_q  <= 1'b0;
       j_q  <= '0;  j_neg_q  <= 1'b0;
       k_q           <= '0;
+      grow_x_q      <= 1'b0;
+      grow_y_q      <= 1'b0;
       n_seen_q      <= 1'b0;
       any_word_q    <= 1'b0;
       motion_blk_q  <= 1'b0;
@@ -513,30 +541,32 @@ module tape_decoder #(
       tape_end_q    <= tape_end_i;
       ready_q       <= ready_d;
       if (update) begin
-        state_q       <= state_d;
-        frame_count_q <= frame_count_d;
-        word_q        <= word_d;
-        num_state_q   <= num_state_d;
-        num_q         <= num_d;
-        neg_q         <= neg_d;
-        frac_count_q  <= frac_count_d;
-        word_offset_q <= word_offset_d;
-        n_q           <= n_d;
-        motion_q      <= motion_d;
-        feed_q        <= feed_d;
-        dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
-        dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
-        i_q  <= i_d;   i_neg_q  <= i_neg_d;
-        j_q  <= j_d;   j_neg_q  <= j_neg_d;
-        k_q           <= k_d;
-        n_seen_q      <= n_seen_d;
-        any_word_q    <= any_word_d;
-        motion_blk_q  <= motion_blk_d;
-        end_blk_q     <= end_blk_d;
-        err_code_q    <= err_code_d;
-        err_block_q   <= err_block_d;
-        err_offset_q  <= err_offset_d;
-      end
+          state_q       <= state_d;
+          frame_count_q <= frame_count_d;
+          word_q        <= word_d;
+          num_state_q   <= num_state_d;
+          num_q         <= num_d;
+          neg_q         <= neg_d;
+          frac_count_q  <= frac_count_d;
+          word_offset_q <= word_offset_d;
+          n_q           <= n_d;
+          motion_q      <= motion_d;
+          feed_q        <= feed_d;
+          dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
+          dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
+          i_q  <= i_d;   i_neg_q  <= i_neg_d;
+          j_q  <= j_d;   j_neg_q  <= j_neg_d;
+          k_q           <= k_d;
+          grow_x_q      <= grow_x_d;
+          grow_y_q      <= grow_y_d;
+          n_seen_q      <= n_seen_d;
+          any_word_q    <= any_word_d;
+          motion_blk_q  <= motion_blk_d;
+          end_blk_q     <= end_blk_d;
+          err_code_q    <= err_code_d;
+          err_block_q   <= err_block_d;
+          err_offset_q  <= err_offset_d;
+        end
     end
   end
 
@@ -549,11 +579,11 @@ module tape_decoder #(
   assign blk_dy_o      = dy_q;
   assign blk_dy_neg_o  = dy_neg_q;
   assign blk_i_o       = i_q;
-  assign blk_i_neg_o   = i_neg_q;
   assign blk_j_o       = j_q;
-  assign blk_j_neg_o   = j_neg_q;
   assign blk_step_o    = motion_q == 2'd1 ? StepWidth'(feed_q) << k_q : arc_step;
   assign blk_k_o       = k_q;
+  assign blk_grow_x_o  = grow_x_q;
+  assign blk_grow_y_o  = grow_y_q;
   assign end_o         = state_q == StEnd;
   assign tape_ended_o  = tape_end_q;
   assign err_o         = state_q == StError;
