@@ -42,7 +42,7 @@ constexpr int kBandBase = kPaletteSize + 2;     // translucent copies of the pal
 
 // Layout, in px of the page: the page title's strip, the room under a panel for its tick
 // labels and axis title, and one legend row.
-constexpr double kTitleHeightPx = 50.0;
+constexpr double kTitleHeightPx = 62.0;
 constexpr double kAxisBelowPx = 75.0;
 constexpr double kLegendRowPx = 32.0;
 constexpr double kTextScale = 0.75;  // of PLplot's default character height
@@ -203,7 +203,10 @@ class PanelPainter {
     steps_ = {decade_step(p.x_scale, xr, (x1 - x0) * fig_.width_px / 60.0),
               decade_step(p.y_scale, yr, (y1 - y0) * fig_.height_px / 28.0)};
     pls_.slabelfunc(&PanelPainter::decade_label, &steps_);
-    const double xtick = 0.0, ytick = 0.0;
+    // Linear axes: a 1-2-5 tick step whose labels fit along the axis (y labels run along
+    // it too); PLplot's automatic choice crowds short panels.
+    const double xtick = linear_step(p.x_scale, xr, (x1 - x0) * fig_.width_px);
+    const double ytick = linear_step(p.y_scale, yr, (y1 - y0) * fig_.height_px);
     pls_.col0(kGridColour);
     pls_.width(0.5);
     pls_.box(("g" + xopt).c_str(), xtick, 0, ("g" + yopt).c_str(), ytick, 0);
@@ -239,6 +242,23 @@ class PanelPainter {
   static int decade_step(Scale s, const Range& r, double labels) {
     if (s != Scale::kLog10) return 1;
     return static_cast<int>(std::max(1.0, std::ceil((r.high - r.low) / std::max(1.0, labels))));
+  }
+
+  // The smallest tick step of 1, 2 or 5 times a power of ten whose labels fit along an
+  // axis of `axis_px` (a label of c characters takes about 12 c + 16 px); 0 (unused) on a
+  // log axis.
+  static double linear_step(Scale s, const Range& r, double axis_px) {
+    if (s != Scale::kLinear) return 0.0;
+    const double span = r.high - r.low;
+    const double biggest = std::max(std::fabs(r.low), std::fabs(r.high));
+    for (double decade = std::pow(10.0, std::floor(std::log10(span)) - 3);; decade *= 10.0)
+      for (double m : {1.0, 2.0, 5.0}) {
+        const double step = m * decade;
+        const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9)));
+        const int digits = 1 + static_cast<int>(std::max(0.0, std::floor(std::log10(biggest))));
+        const int chars = digits + (r.low < 0 ? 1 : 0) + (decimals > 0 ? decimals + 1 : 0);
+        if (span / step * (12.0 * chars + 16.0) <= axis_px) return step;
+      }
   }
 
   // PLplot's custom label callback (box option "o", used on log axes only): "10^n" in
