@@ -88,7 +88,9 @@ Panel zoom_panel(const CheckPlotData& d) {
   p.equal_aspect = true;
   p.x_range = plot::Range{d.zoom.x0, d.zoom.x1};
   p.y_range = plot::Range{d.zoom.y0, d.zoom.y1};
-  if (!d.zoom_contour.empty()) p.series.push_back(series_of(d.zoom_contour, "contour", Colour::kBlack, 1.5));
+  if (!d.zoom_contour.empty())
+    p.series.push_back(series_of(d.zoom_contour, d.cutter ? "cutter-centre path (contour + R)" : "contour",
+                                 Colour::kBlack, 1.5));
   if (!d.zoom_programmed.empty())
     p.series.push_back(series_of(d.zoom_programmed, "programmed block", Colour::kBlue));
   Series pulses = series_of(d.zoom_pulses, "pulse path (one BLU per step)", Colour::kRed);

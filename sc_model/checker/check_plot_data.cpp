@@ -17,6 +17,15 @@ void sample(const Segment& s, double u0, double u1, int n, double blu, Polyline&
   }
 }
 
+// A point of a segment moved `offset` BLU along its normal to the left (negative: right):
+// the cutter-centre path at that point when the cutter runs on that side.
+Vec2 offset_point(const Segment& s, double u, double offset) {
+  const firststage::CurvePoint c = s.eval(u);
+  const double len = std::hypot(c.d1.x, c.d1.y);
+  if (offset == 0.0 || len == 0.0) return c.p;
+  return Vec2{c.p.x - c.d1.y / len * offset, c.p.y + c.d1.x / len * offset};
+}
+
 int samples_for(const Segment& s) {
   if (s.is_arc()) return std::max(8, static_cast<int>(std::fabs(s.sweep()) / (M_PI / 180)));
   return s.kind() == firststage::SegmentKind::kLine ? 1 : 64;
@@ -89,6 +98,7 @@ CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, size_t bins)
 
   // The worst point and its foot.
   d.total_measured = c.total_error().count > 0;
+  d.cutter = o.reference && o.reference->radius_blu() > 0;
   const ErrorStat& worst = d.total_measured ? c.total_error() : c.path_error();
   if (worst.count > 0) {
     d.has_worst = true;
@@ -97,7 +107,14 @@ CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, size_t bins)
     d.worst_block = c.blocks()[worst.block].tape.n;
     d.worst_cycle = worst.cycle;
     if (d.total_measured) {
-      d.worst_foot = mmv(o.reference->measure(to_vec(worst.position)).foot);
+      // The foot on the part; with a cutter, the point R from it towards the tool, on the
+      // cutter-centre path the total error is measured against.
+      Vec2 foot = o.reference->measure(to_vec(worst.position)).foot;
+      const Vec2 to_tool = to_vec(worst.position) - foot;
+      const double d_part = std::hypot(to_tool.x, to_tool.y);
+      if (o.reference->radius_blu() > 0 && d_part > 0)
+        foot = foot + (o.reference->radius_blu() / d_part) * to_tool;
+      d.worst_foot = mmv(foot);
     } else {
       double along = 0;
       const ProgrammedBlock& b = c.blocks()[worst.block];
@@ -109,23 +126,27 @@ CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, size_t bins)
   }
 
   if (d.has_worst && o.reference) {
-    // Contour inside the zoom: coarse samples find the pieces, then dense samples there.
+    // The path the total error is measured against inside the zoom: the contour, or with a
+    // cutter the contour moved R along its normal to the cutter's side. Coarse samples find
+    // the pieces, then dense samples there.
+    const double offset = o.reference->radius_blu() * (o.reference->cutter_left() ? 1.0 : -1.0);
     const PlotWindow& z = d.zoom;
     const PlotWindow wide{z.x0 - (z.x1 - z.x0), z.y0 - (z.y1 - z.y0), z.x1 + (z.x1 - z.x0), z.y1 + (z.y1 - z.y0)};
     for (const Segment& s : o.reference->cutting_segments()) {
-      const int n0 = 4096;
+      const int n0 = 4096, dense = 64;
+      auto at = [&](double u) {
+        const Vec2 p = offset_point(s, u, offset);
+        return PlotPoint{p.x * blu, p.y * blu};
+      };
       Polyline run;
       for (int i = 0; i < n0; ++i) {
         const double u0 = static_cast<double>(i) / n0, u1 = static_cast<double>(i + 1) / n0;
-        const Vec2 a = s.point(u0), b = s.point(u1);
-        PlotPoint pa{a.x * blu, a.y * blu}, pb{b.x * blu, b.y * blu};
+        PlotPoint pa = at(u0), pb = at(u1);
         if (!clip(pa, pb, wide)) {
           if (!run.empty()) d.zoom_contour.push_back(std::move(run)), run.clear();
           continue;
         }
-        Polyline dense;
-        sample(s, u0, u1, 64, blu, dense);
-        run.insert(run.end(), dense.begin() + (run.empty() ? 0 : 1), dense.end());
+        for (int k = run.empty() ? 0 : 1; k <= dense; ++k) run.push_back(at(u0 + (u1 - u0) * k / dense));
       }
       if (!run.empty()) d.zoom_contour.push_back(std::move(run));
     }

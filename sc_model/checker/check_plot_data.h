@@ -50,6 +50,7 @@ struct CheckPlotData {
   double path_length_mm = 0.0;
   double tol_mm = 0.0;
   bool total_measured = false;
+  bool cutter = false;                 // the zoom's contour is the cutter-centre path
 };
 
 // Needs the outcome's pulses (CheckSetup::keep_pulses).

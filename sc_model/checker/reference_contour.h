@@ -54,6 +54,7 @@ class ReferenceContour {
   const std::vector<firststage::Segment>& cutting_segments() const { return cut_.segments(); }
   const std::vector<firststage::Segment>& rapid_segments() const { return rapids_; }
   double radius_blu() const { return radius_; }
+  bool cutter_left() const { return options_.cutter_left; }
   IntPoint start() const { return options_.start; }
 
  private:

@@ -11,16 +11,20 @@
 namespace ncinterp::checker {
 namespace {
 
-CheckOutcome inscribed_polygon_check() {
+// A 48-gon inscribed in the circle of radius 20 + cutter_mm about the origin, checked
+// against the circle of radius 20 (the part; with a cutter, outside it: on the right of the
+// counter-clockwise travel).
+CheckOutcome inscribed_polygon_check(double cutter_mm = 0.0) {
   firststage::Contour circle;
   circle.origin = {20.0, 0.0};
   circle.segments.push_back(firststage::Segment::arc({0, 0}, 20.0, 0.0, 2 * M_PI));
   circle.element_names = {"circle"};
   tape::Program p;
-  int64_t px = 20000, py = 0;
+  const double r = 20000 + 1000 * cutter_mm;
+  int64_t px = std::llround(r), py = 0;
   for (int k = 1; k <= 48; ++k) {
     const double a = 2 * M_PI * k / 48;
-    const int64_t x = std::llround(20000 * std::cos(a)), y = std::llround(20000 * std::sin(a));
+    const int64_t x = std::llround(r * std::cos(a)), y = std::llround(r * std::sin(a));
     tape::Block b;
     b.n = static_cast<uint32_t>(k);
     b.dx = x - px, b.dy = y - py, b.feed = 4'000'000;
@@ -30,6 +34,11 @@ CheckOutcome inscribed_polygon_check() {
   CheckSetup setup;
   setup.reader_cps = 1e6;
   setup.tol_mm = 0.1;
+  if (cutter_mm > 0) {
+    setup.cutter_radius_mm = cutter_mm;
+    setup.cutter_left = false;
+    setup.start_mm = firststage::Vec2{20.0 + cutter_mm, 0.0};
+  }
   return run_check(test::frames_of(p), &circle, setup);
 }
 
@@ -64,6 +73,21 @@ TEST(CheckPlotData, WorstPointZoomAndBins) {
   // length (4/pi the circle).
   EXPECT_GT(d.path_length_mm, 2 * M_PI * 20.0);
   EXPECT_LT(d.path_length_mm, 8 * 20.0 * std::sqrt(2.0));
+}
+
+// With a cutter the zoom shows the cutter-centre path (the contour moved R outwards) and
+// the worst point's foot lies on it, R from the part.
+TEST(CheckPlotData, CutterZoomShowsTheCutterCentrePath) {
+  const CheckOutcome out = inscribed_polygon_check(2.0);
+  ASSERT_TRUE(out.passed());
+  const CheckPlotData d = check_plot_data(out, 0.1, 500);
+  ASSERT_TRUE(d.has_worst);
+  EXPECT_TRUE(d.cutter);
+  EXPECT_NEAR(std::hypot(d.worst_foot.x, d.worst_foot.y), 22.0, 1e-6);
+  EXPECT_NEAR(std::hypot(d.worst.x - d.worst_foot.x, d.worst.y - d.worst_foot.y), d.worst_error_mm, 1e-6);
+  ASSERT_FALSE(d.zoom_contour.empty());
+  for (const Polyline& run : d.zoom_contour)
+    for (const PlotPoint& q : run) EXPECT_NEAR(std::hypot(q.x, q.y), 22.0, 1e-9);
 }
 
 }  // namespace
