@@ -3,57 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "cli_test.h"
 #include "regression_support.h"
 #include "tape/tape.h"
 
 namespace ncinterp::regression {
 namespace {
 
-namespace fs = std::filesystem;
-
-struct CliRun {
-  int code = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class CheckCli : public ::testing::Test {
+class CheckCli : public test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("ncinterp_check_cli_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun ncinterp(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(NCINTERP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-  }
-
   // The circle example's tape, written like `ncinterp tape` does (feed high for speed).
   std::string circle_tape(double tol_mm = 0.01) {
     Case c;
@@ -61,21 +22,19 @@ class CheckCli : public ::testing::Test {
     c.first_stage.tol_mm = tol_mm;
     c.first_stage.feed_mm_min = 20000;
     const auto r = firststage::run_first_stage(c.contour, c.first_stage);
-    const std::string path = (dir_ / "circle.tape").string();
-    tape::write_tape_file(path, firststage::make_program(r, c.first_stage), firststage::tape_format(c.first_stage));
-    return path;
+    tape::write_tape_file(path("circle.tape"), firststage::make_program(r, c.first_stage),
+                          firststage::tape_format(c.first_stage));
+    return path("circle.tape");
   }
-
-  fs::path dir_;
 };
 
 TEST_F(CheckCli, PassingTapeExitsZeroAndWritesTheReport) {
   const std::string tape = circle_tape();
-  const fs::path report = dir_ / "r.json";
-  const CliRun r = ncinterp("check " + tape + " --contour " + example_path("circle_r50.json") +
-                         " --reader-cps 100000 --report " + report.string());
-  ASSERT_EQ(r.code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("PASS"), std::string::npos) << r.out;
+  const std::string report = path("r.json");
+  const int code = run("check " + tape + " --contour " + example_path("circle_r50.json") +
+                         " --reader-cps 100000 --report " + report);
+  ASSERT_EQ(code, 0) << stdout_ << stderr_;
+  EXPECT_NE(stdout_.find("PASS"), std::string::npos) << stdout_;
   const auto j = nlohmann::json::parse(slurp(report));
   EXPECT_EQ(j["status"], "pass");
   EXPECT_LE(j["total_error"]["max_mm"].get<double>(), 0.01);
@@ -87,10 +46,10 @@ TEST_F(CheckCli, PassingTapeExitsZeroAndWritesTheReport) {
 
 TEST_F(CheckCli, SvgShowsThePartTheWorstPointAndTheErrorAlongThePath) {
   const std::string tape = circle_tape();
-  const fs::path report = dir_ / "r.json", svg = dir_ / "p.svg";
-  const CliRun r = ncinterp("check " + tape + " --contour " + example_path("circle_r50.json") +
-                         " --reader-cps 100000 --report " + report.string() + " --svg " + svg.string());
-  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const std::string report = path("r.json"), svg = path("p.svg");
+  const int code = run("check " + tape + " --contour " + example_path("circle_r50.json") +
+                         " --reader-cps 100000 --report " + report + " --svg " + svg);
+  ASSERT_EQ(code, 0) << stdout_ << stderr_;
   const std::string doc = slurp(svg);
   EXPECT_EQ(doc.rfind("<?xml", 0), 0u);
   EXPECT_NE(doc.find("</svg>"), std::string::npos);
@@ -108,43 +67,43 @@ TEST_F(CheckCli, SvgShowsThePartTheWorstPointAndTheErrorAlongThePath) {
 
 TEST_F(CheckCli, TotalErrorOverTolExitsTwoAndNamesTheBlock) {
   const std::string tape = circle_tape(0.05);  // chords 5x coarser than the check's tol
-  const fs::path report = dir_ / "r.json";
-  const CliRun r = ncinterp("check " + tape + " --contour " + example_path("circle_r50.json") +
-                         " --tol 0.01 --reader-cps 100000 --report " + report.string());
-  EXPECT_EQ(r.code, 2) << r.out << r.err;
-  EXPECT_NE(r.out.find("FAIL"), std::string::npos);
-  EXPECT_NE(r.out.find("tolerance in block N"), std::string::npos) << r.out;
+  const std::string report = path("r.json");
+  const int code = run("check " + tape + " --contour " + example_path("circle_r50.json") +
+                         " --tol 0.01 --reader-cps 100000 --report " + report);
+  EXPECT_EQ(code, 2) << stdout_ << stderr_;
+  EXPECT_NE(stdout_.find("FAIL"), std::string::npos);
+  EXPECT_NE(stdout_.find("tolerance in block N"), std::string::npos) << stdout_;
   const auto j = nlohmann::json::parse(slurp(report));
   EXPECT_EQ(j["status"], "fail");
   EXPECT_EQ(j["violations"][0]["rule"], "tolerance");
 }
 
 TEST_F(CheckCli, BadTapeIsOneLineNamingBlockAndOffsetWithNoReport) {
-  std::ofstream(dir_ / "bad.nc") << "%\nG17 G21 G91 G93\nN1 G01 X1.000 Y2.000 F100.000\nN2 G01 X1.0Q0 F100.000\nM02\n%\n";
-  const fs::path report = dir_ / "r.json";
-  const CliRun r = ncinterp("check " + (dir_ / "bad.nc").string() + " --report " + report.string());
-  EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("bad.nc: block N2, offset"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(report));
+  write("bad.nc", "%\nG17 G21 G91 G93\nN1 G01 X1.000 Y2.000 F100.000\nN2 G01 X1.0Q0 F100.000\nM02\n%\n");
+  const std::string report = path("r.json");
+  const int code = run("check " + path("bad.nc") + " --report " + report);
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(stderr_.find("bad.nc: block N2, offset"), std::string::npos) << stderr_;
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_FALSE(std::filesystem::exists(report));
 }
 
 TEST_F(CheckCli, BadContourIsOneLineNamingFileAndLine) {
   const std::string tape = circle_tape();
-  std::ofstream(dir_ / "bad.json") << "{\"start\": [0, 0],\n \"segments\": [\n {\"type\": \"spiral\"}]}\n";
-  const fs::path report = dir_ / "r.json";
-  const CliRun r = ncinterp("check " + tape + " --contour " + (dir_ / "bad.json").string() +
-                         " --report " + report.string());
-  EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("bad.json:3"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(report));
+  write("bad.json", "{\"start\": [0, 0],\n \"segments\": [\n {\"type\": \"spiral\"}]}\n");
+  const std::string report = path("r.json");
+  const int code = run("check " + tape + " --contour " + path("bad.json") +
+                         " --report " + report);
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(stderr_.find("bad.json:3"), std::string::npos) << stderr_;
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_FALSE(std::filesystem::exists(report));
 }
 
 TEST_F(CheckCli, MissingTapeFileIsAnError) {
-  const CliRun r = ncinterp("check " + (dir_ / "nope.tape").string());
-  EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("nope.tape"), std::string::npos) << r.err;
+  const int code = run("check " + path("nope.tape"));
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(stderr_.find("nope.tape"), std::string::npos) << stderr_;
 }
 
 }  // namespace

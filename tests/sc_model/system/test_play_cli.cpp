@@ -3,57 +3,22 @@
 // name the ports identically; the GTKWave save file names only signals the RTL VCD has; a
 // bad tape gives one error line, a non-zero exit, a complete error report and no VCD.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_test.h"
 #include "vcd_header.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-class PlayCli : public ::testing::Test {
+class PlayCli : public ncinterp::test::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("ncinterp_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-  static std::string slurp(const std::string& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  // Runs `ncinterp play ARGS`; stdout/stderr go to files outside the checked directory.
-  int play(const std::string& args) {
-    const std::string out = (dir_.parent_path() / (dir_.filename().string() + ".out")).string();
-    const std::string err = (dir_.parent_path() / (dir_.filename().string() + ".err")).string();
-    const std::string cmd = std::string(NCINTERP_BINARY) + " play " + args + " >" + out + " 2>" + err;
-    const int status = std::system(cmd.c_str());
-    stdout_ = slurp(out);
-    stderr_ = slurp(err);
-    fs::remove(out);
-    fs::remove(err);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  fs::path dir_;
-  std::string stdout_, stderr_;
+  int play(const std::string& args) { return run("play " + args); }
 };
 
 const std::string kGear = std::string(NCINTERP_EXAMPLES_DIR) + "/gear.nc";

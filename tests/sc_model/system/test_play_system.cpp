@@ -5,16 +5,12 @@
 // (reader timing, reset and sampling add nothing), for the golden and the RTL engine; the
 // VCD window lands on the documented edges; a bad tape leaves no VCD.
 #include <gtest/gtest.h>
-#include <unistd.h>
-
-#include <filesystem>
 
 #include "frame_source.h"
 #include "golden_interp.h"
 #include "play_run.h"
+#include "scratch_dir_test.h"
 #include "vcd_header.h"
-
-namespace fs = std::filesystem;
 
 namespace ncinterp::system {
 namespace {
@@ -113,22 +109,7 @@ TEST(PlaySystem, RtlEngineSeesWhatThePlainGoldenModelSees) {
   play_matches_plain_golden(EngineKind::kRtl);
 }
 
-class PlayFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("ncinterp_play_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  size_t entries() const {
-    return static_cast<size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-  }
-  fs::path dir_;
-};
+using PlayFiles = ncinterp::test::ScratchDirTest;
 
 // Window N20..N30: opens half a clock before the load edge of N20, closes half a clock
 // after the end edge of N30; edge c is at (c + 1) periods (the reset edge is at one period).
@@ -160,13 +141,13 @@ void window_lands_on_block_edges(EngineKind engine, const std::string& vcd) {
 
 TEST_F(PlayFiles, GoldenVcdWindowByBlocks) {
   window_lands_on_block_edges(EngineKind::kGolden, path("g.vcd"));
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(files().size(), 1u);
 }
 
 TEST_F(PlayFiles, RtlVcdWindowByBlocks) {
   if (!rtl_engine_available()) GTEST_SKIP() << "this build has no verilated SystemC RTL";
   window_lands_on_block_edges(EngineKind::kRtl, path("r.vcd"));
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(files().size(), 1u);
 }
 
 TEST_F(PlayFiles, BadTapeStopsAtTheBlockAndLeavesNoVcd) {
@@ -191,7 +172,7 @@ TEST_F(PlayFiles, BadTapeStopsAtTheBlockAndLeavesNoVcd) {
   EXPECT_EQ(r.summary.final_x, 2351 + (-727 - 2351));
   EXPECT_EQ(r.summary.final_y, 2236);
   EXPECT_FALSE(r.vcd_written);
-  EXPECT_EQ(entries(), 0u);
+  EXPECT_EQ(files().size(), 0u);
 }
 
 TEST_F(PlayFiles, WindowOnABlockThatNeverPlaysIsAnError) {
@@ -200,7 +181,7 @@ TEST_F(PlayFiles, WindowOnABlockThatNeverPlaysIsAnError) {
   o.vcd_path = path("w.vcd");
   o.vcd_from = parse_vcd_bound("N99");
   EXPECT_THROW(run_play(frames_of(p), p, o), std::runtime_error);
-  EXPECT_EQ(entries(), 0u);
+  EXPECT_EQ(files().size(), 0u);
 }
 
 TEST(PlaySystem, VcdBoundParsing) {

@@ -5,39 +5,16 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 #include <stdexcept>
 
 #include "atomic_file.h"
+#include "scratch_dir_test.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-class AtomicFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("ncinterp_atomic_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  size_t entries() const {
-    return static_cast<size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-  }
-  static std::string read(const std::string& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-
-  fs::path dir_;
-};
+using AtomicFileTest = ncinterp::test::ScratchDirTest;
 
 TEST_F(AtomicFileTest, CommitCreatesTheTargetWithTheContent) {
   {
@@ -46,8 +23,8 @@ TEST_F(AtomicFileTest, CommitCreatesTheTargetWithTheContent) {
     EXPECT_FALSE(fs::exists(path("out.txt")));  // not visible before commit
     f.commit();
   }
-  EXPECT_EQ(read(path("out.txt")), "hello\n");
-  EXPECT_EQ(entries(), 1u);  // no temporary left
+  EXPECT_EQ(slurp(path("out.txt")), "hello\n");
+  EXPECT_EQ(files().size(), 1u);  // no temporary left
 }
 
 TEST_F(AtomicFileTest, NoCommitLeavesNothing) {
@@ -56,7 +33,7 @@ TEST_F(AtomicFileTest, NoCommitLeavesNothing) {
     f.stream() << "partial";
     EXPECT_TRUE(fs::exists(f.temp_path()));
   }
-  EXPECT_EQ(entries(), 0u);
+  EXPECT_EQ(files().size(), 0u);
 }
 
 TEST_F(AtomicFileTest, ExceptionKeepsTheOldTarget) {
@@ -67,8 +44,8 @@ TEST_F(AtomicFileTest, ExceptionKeepsTheOldTarget) {
     throw std::runtime_error("simulated failure");
   } catch (const std::runtime_error&) {
   }
-  EXPECT_EQ(read(path("report.json")), "old");
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(slurp(path("report.json")), "old");
+  EXPECT_EQ(files().size(), 1u);
 }
 
 TEST_F(AtomicFileTest, TemporaryKeepsTheExtensionAndDirectory) {
@@ -84,8 +61,8 @@ TEST_F(AtomicFileTest, ToolWritingByNameIsCommitted) {
   ncinterp::AtomicOutputFile f(path("w.vcd"));
   { std::ofstream(f.temp_path()) << "$date"; }
   f.commit();
-  EXPECT_EQ(read(path("w.vcd")), "$date");
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(slurp(path("w.vcd")), "$date");
+  EXPECT_EQ(files().size(), 1u);
 }
 
 TEST_F(AtomicFileTest, MissingDirectoryIsAClearError) {
@@ -106,7 +83,7 @@ TEST_F(AtomicFileTest, TwoWritersGetDistinctTemporaries) {
 TEST_F(AtomicFileTest, BytesHelperWritesBinary) {
   const std::vector<uint8_t> bytes = {0x00, 0xA5, 0x0A, 0xFF};
   ncinterp::write_file_atomically(path("b.tape"), bytes);
-  const std::string got = read(path("b.tape"));
+  const std::string got = slurp(path("b.tape"));
   ASSERT_EQ(got.size(), 4u);
   EXPECT_EQ(static_cast<uint8_t>(got[1]), 0xA5);
   EXPECT_EQ(static_cast<uint8_t>(got[3]), 0xFF);

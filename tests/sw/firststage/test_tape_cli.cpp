@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_test.h"
 #include "inputs/contour_inputs.h"
 #include "tape/tape.h"
 
@@ -22,48 +23,9 @@ namespace {
 
 const std::string kExamples = NCINTERP_EXAMPLES_DIR;
 
-class TapeCli : public ::testing::Test {
+class TapeCli : public CliTest {
  protected:
-  void SetUp() override {
-    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    for (char& ch : name)
-      if (ch == '/') ch = '_';
-    dir_ = fs::temp_directory_path() / ("ncinterp_tape_" + std::to_string(::getpid()) + "_" + name);
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-  static std::string slurp(const std::string& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  void write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name), std::ios::binary) << text;
-  }
-  // Runs `ncinterp ARGS`; stdout/stderr go to files outside the checked directory.
-  int run(const std::string& args) {
-    const std::string base = (dir_.parent_path() / dir_.filename()).string();
-    const std::string cmd = std::string(NCINTERP_BINARY) + " " + args + " >" + base + ".out 2>" + base + ".err";
-    const int status = std::system(cmd.c_str());
-    stdout_ = slurp(base + ".out");
-    stderr_ = slurp(base + ".err");
-    fs::remove(base + ".out");
-    fs::remove(base + ".err");
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
   static nlohmann::json json_of(const std::string& p) { return nlohmann::json::parse(slurp(p)); }
-
-  fs::path dir_;
-  std::string stdout_, stderr_;
 };
 
 // ---- every input kind, every method, both arc modes ----------------------------------

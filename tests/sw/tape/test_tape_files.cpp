@@ -1,11 +1,11 @@
 // Tape files: .tape frames vs plain text, the 7-bit check, atomic writing, and every
 // bundled example tape parses.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "scratch_dir_test.h"
 #include "tape.h"
 
 namespace fs = std::filesystem;
@@ -13,24 +13,8 @@ namespace fs = std::filesystem;
 namespace ncinterp::tape {
 namespace {
 
-class TapeFileTest : public ::testing::Test {
+class TapeFileTest : public ncinterp::test::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("ncinterp_tape_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  size_t entries() const {
-    return static_cast<size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-  }
-  void write_raw(const std::string& name, const std::string& bytes) {
-    std::ofstream(path(name), std::ios::binary) << bytes;
-  }
-
   static Program square() {
     Program p;
     p.blocks = {{1, Motion::kLine, 1000, 0, 0, 0, 6000},
@@ -39,7 +23,6 @@ class TapeFileTest : public ::testing::Test {
                 {4, Motion::kLine, 0, -1000, 0, 0, 6000}};
     return p;
   }
-  fs::path dir_;
 };
 
 TEST_F(TapeFileTest, TapeFileHoldsFramesWithParity) {
@@ -50,7 +33,7 @@ TEST_F(TapeFileTest, TapeFileHoldsFramesWithParity) {
   EXPECT_EQ(raw, frames);
   EXPECT_EQ(frames, add_parity(format_program(square(), Format{})));
   EXPECT_EQ(parse_frames(frames, Format{}).blocks.size(), 4u);
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(files().size(), 1u);
 }
 
 TEST_F(TapeFileTest, PlainTextGetsParityOnLoad) {
@@ -64,7 +47,7 @@ TEST_F(TapeFileTest, PlainTextGetsParityOnLoad) {
 }
 
 TEST_F(TapeFileTest, EightBitByteInPlainTextIsAClearError) {
-  write_raw("bad.nc", "%\nN1 G01 X1.000 F1.000 (caf\xC3\xA9)\nM02\n%\n");
+  write("bad.nc", "%\nN1 G01 X1.000 F1.000 (caf\xC3\xA9)\nM02\n%\n");
   try {
     load_frames(path("bad.nc"));
     FAIL();
@@ -87,16 +70,16 @@ TEST_F(TapeFileTest, FailedWriteLeavesNothingAndKeepsTheOldTape) {
   Program bad = square();
   bad.blocks[2].dx = 1 << 20;  // too wide for the 16-bit increment register
   EXPECT_THROW(write_tape_file(path("new.tape"), bad, Format{}), std::invalid_argument);
-  EXPECT_EQ(entries(), 0u);
+  EXPECT_EQ(files().size(), 0u);
 
   write_tape_file(path("old.tape"), square(), Format{});
   const std::vector<uint8_t> before = load_frames(path("old.tape"));
   EXPECT_THROW(write_tape_file(path("old.tape"), bad, Format{}), std::invalid_argument);
   EXPECT_EQ(load_frames(path("old.tape")), before);
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(files().size(), 1u);
 
   EXPECT_THROW(write_tape_file(path("no_dir/x.tape"), square(), Format{}), std::runtime_error);
-  EXPECT_EQ(entries(), 1u);
+  EXPECT_EQ(files().size(), 1u);
 }
 
 TEST(TapeExamples, EveryBundledTapeParses) {
