@@ -42,7 +42,8 @@ struct SweepArgs {
   double pnr_mhz = 50.0;
 };
 
-// The columns of the two tables in docs/bit-widths.md (--markdown).
+// The columns of the tables in docs/bit-widths.md (--markdown; the third has the blocks of
+// every input).
 const std::vector<std::string> kTapeColumns = {"width", "blocks", "tape_frames", "path_error_max_blu",
                                                "total_error_max_mm", "check", "feed_error_worst", "cycles",
                                                "rtl_cosim"};
@@ -90,8 +91,13 @@ int run(const SweepArgs& a) {
   // Every output in memory first, then each written atomically.
   const Table table = sweep_table(rows);
   const std::string csv = a.csv.empty() ? "" : to_csv(table);
-  const std::string markdown =
-      a.markdown.empty() ? "" : to_markdown(table, kTapeColumns) + "\n" + to_markdown(table, kHardwareColumns);
+  std::vector<std::string> input_columns = {"width"};
+  for (const std::string& h : table.header)
+    if (h.rfind("blocks ", 0) == 0) input_columns.push_back(h);
+  const std::string markdown = a.markdown.empty() ? ""
+                                                  : to_markdown(table, kTapeColumns) + "\n" +
+                                                        to_markdown(table, input_columns) + "\n" +
+                                                        to_markdown(table, kHardwareColumns);
   std::string svg;
 #ifdef NCINTERP_SWEEP_HAS_PLOT
   if (!a.svg.empty()) {

@@ -1,6 +1,7 @@
 // The sweep's figure from its rows (see sweep_plot.h).
 #include "sweep_plot.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -60,16 +61,19 @@ plot::Figure sweep_figure(const std::vector<SweepRow>& rows, const PlotContext& 
   f.width_px = 1500;
   f.height_px = 900;
 
-  f.panels.push_back(panel("Area (yosys)", "cells",
-                           {series(rows, "generic cells", Colour::kBlue, [](const SweepRow& r) { return value(r.synth.cells); }),
-                            series(rows, "flip-flops", Colour::kRed, [](const SweepRow& r) { return value(r.synth.flip_flops); }),
-                            series(rows, "iCE40 LUT4", Colour::kGreen, [](const SweepRow& r) { return value(r.synth.ice40_luts); }),
-                            series(rows, "HX8K logic cells (placed harness)", Colour::kOrange,
-                                   [](const SweepRow& r) { return value(r.synth.ice40_logic_cells); })}));
+  // Area on a log axis: flip-flops and gates differ tenfold.
+  Panel area = panel("Area (yosys)", "cells",
+                     {series(rows, "generic cells", Colour::kBlue, [](const SweepRow& r) { return value(r.synth.cells); }),
+                      series(rows, "flip-flops", Colour::kRed, [](const SweepRow& r) { return value(r.synth.flip_flops); }),
+                      series(rows, "iCE40 LUT4", Colour::kGreen, [](const SweepRow& r) { return value(r.synth.ice40_luts); }),
+                      series(rows, "HX8K logic cells (placed harness)", Colour::kOrange,
+                             [](const SweepRow& r) { return value(r.synth.ice40_logic_cells); })});
+  area.y_scale = plot::Scale::kLog10;
+  f.panels.push_back(std::move(area));
 
-  f.panels.push_back(panel("Fmax, HX8K (nextpnr-ice40)", "MHz",
-                           {series(rows, "Fmax after routing", Colour::kPurple,
-                                   [](const SweepRow& r) { return value(r.synth.fmax_mhz); })}));
+  Panel fmax = panel("Fmax after routing, HX8K (nextpnr-ice40)", "MHz",
+                     {series(rows, "", Colour::kPurple, [](const SweepRow& r) { return value(r.synth.fmax_mhz); })});
+  f.panels.push_back(std::move(fmax));
 
   // Tape length: every input's blocks, on a log axis (narrow registers multiply them).
   std::vector<Series> tape;
@@ -101,19 +105,24 @@ plot::Figure sweep_figure(const std::vector<SweepRow>& rows, const PlotContext& 
     for (const SweepRow& r : rows) tol.x.push_back(r.width), tol.y.push_back(ctx.tol_mm * 1000.0);
     errors.push_back(std::move(tol));
   }
-  f.panels.push_back(panel("Max error (checker)", "micrometres", std::move(errors)));
+  Panel error = panel("Max error (checker)", "micrometres", std::move(errors));
+  error.y_range = plot::Range{0.0, 1.2 * ctx.tol_mm * 1000.0};  // the tolerance line inside the frame
+  f.panels.push_back(std::move(error));
 
   f.panels.push_back(panel("Feed: worst block time vs 1/F", "relative error (%)",
-                           {series(rows, "worst block", Colour::kBrown,
+                           {series(rows, "", Colour::kBrown,
                                    worst(&InputResult::feed_error_worst, 100.0))}));
 
-  Panel cycles = panel("Simulated clocks", "clocks",
-                       {series(rows, "clocks to the end of program", Colour::kBlack, [](const SweepRow& r) -> std::optional<double> {
+  Panel cycles = panel("Simulated clocks", "clocks to the end of program",
+                       {series(rows, "", Colour::kBlack, [](const SweepRow& r) -> std::optional<double> {
                          const std::optional<uint64_t> sum = r.total(&InputResult::cycles);
                          if (!sum) return std::nullopt;
                          return static_cast<double>(*sum);
                        })});
-  cycles.y_scale = plot::Scale::kLog10;
+  if (!cycles.series.empty()) {  // from 0, so the axis has labels
+    const std::vector<double>& y = cycles.series.front().y;
+    cycles.y_range = plot::Range{0.0, 1.1 * *std::max_element(y.begin(), y.end())};
+  }
   f.panels.push_back(std::move(cycles));
   return f;
 }
