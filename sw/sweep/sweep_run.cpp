@@ -16,8 +16,7 @@ SynthResult synth_not_run(const std::string& why) {
   return r;
 }
 
-}  // namespace
-
+// The row of one width (what each worker runs); synth_key from synthesis_key().
 SweepRow sweep_width(unsigned w, const SweepSetup& setup, const std::string& synth_key,
                      const std::function<void(const std::string&)>& stage) {
   auto say = [&stage](const char* what) {
@@ -64,6 +63,8 @@ SweepRow sweep_width(unsigned w, const SweepSetup& setup, const std::string& syn
   }
   return row;
 }
+
+}  // namespace
 
 std::vector<SweepRow> run_sweep(const SweepSetup& setup, const ProgressCallback& progress) {
   const size_t total = setup.widths.count();

@@ -41,8 +41,4 @@ using ProgressCallback = std::function<void(const SweepProgress&)>;
 // threads, one call at a time.
 std::vector<SweepRow> run_sweep(const SweepSetup& setup, const ProgressCallback& progress = nullptr);
 
-// The row of one width (what each worker runs); synth_key from synthesis_key().
-SweepRow sweep_width(unsigned width, const SweepSetup& setup, const std::string& synth_key,
-                     const std::function<void(const std::string& stage)>& stage = nullptr);
-
 }  // namespace ncinterp::sweep

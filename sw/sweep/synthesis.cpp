@@ -11,9 +11,6 @@
 namespace ncinterp::sweep {
 namespace {
 
-// HX8K in its CT256 package: the part the issue names, 7680 logic cells.
-const char* const kPnrPart[] = {"--hx8k", "--package", "ct256"};
-
 std::string read_sources(const std::vector<std::string>& files) {
   std::string s = "read_verilog -sv";
   for (const std::string& f : files) s += " \"" + f + "\"";
@@ -41,7 +38,7 @@ std::vector<std::string> pnr_command(const SynthesisSetup& s, const std::string&
   std::ostringstream freq;
   freq << s.pnr_target_mhz;
   std::vector<std::string> cmd = {s.nextpnr};
-  cmd.insert(cmd.end(), std::begin(kPnrPart), std::end(kPnrPart));
+  cmd.insert(cmd.end(), s.pnr_part_args.begin(), s.pnr_part_args.end());
   // --timing-allow-fail: a design slower than the target still gets its Fmax measured.
   for (const std::string& a : {std::string("--json"), json, std::string("--freq"), freq.str(),
                                std::string("--seed"), std::to_string(s.pnr_seed),
@@ -110,7 +107,7 @@ SynthResult synthesize(unsigned w, const SynthesisSetup& s, const std::string& k
                         : Measured::absent(p.ok() ? "synth_ice40: no statistics in " + log
                                                   : failure_reason("yosys synth_ice40", p, log));
   }
-  // Placement and routing of the harness on the HX8K: logic cells and Fmax.
+  // Placement and routing of the harness on the part: logic cells and Fmax.
   {
     const std::string json = dir + "/interp_fpga_top.json";
     const std::string ylog = dir + "/yosys_harness.log";
@@ -123,19 +120,16 @@ SynthResult synthesize(unsigned w, const SynthesisSetup& s, const std::string& k
       const ProcessOutcome p = run_process(pnr_command(s, json), log);
       cacheable &= completed(p);
       const NextpnrReport rep = completed(p) ? parse_nextpnr_log(read_text_file(log)) : NextpnrReport{};
-      if (rep.logic_cells) r.ice40_logic_cells = Measured::of(static_cast<double>(*rep.logic_cells));
-      if (p.ok() && rep.fmax_mhz) {
-        r.fmax_mhz = Measured::of(*rep.fmax_mhz);
-      } else {
-        std::string why = failure_reason("nextpnr-ice40", p, log);
-        if (rep.logic_cells && rep.logic_cells_available && *rep.logic_cells > *rep.logic_cells_available)
-          why = "too big for the HX8K: " + std::to_string(*rep.logic_cells) + " of " +
-                std::to_string(*rep.logic_cells_available) + " logic cells";
-        else if (p.ok())
-          why = "nextpnr-ice40: no \"Max frequency\" in " + log;
-        r.fmax_mhz = Measured::absent(why);
-        if (!rep.logic_cells) r.ice40_logic_cells = Measured::absent(why);
-      }
+      const bool too_big =
+          rep.logic_cells && rep.logic_cells_available && *rep.logic_cells > *rep.logic_cells_available;
+      // The reason for whatever is missing below.
+      const std::string why = p.ok()    ? "nextpnr-ice40: no utilisation or \"Max frequency\" line in " + log
+                              : too_big ? "too big for the " + s.pnr_part_name + ": " + std::to_string(*rep.logic_cells) + " of " +
+                                              std::to_string(*rep.logic_cells_available) + " logic cells"
+                                        : failure_reason("nextpnr-ice40", p, log);
+      r.ice40_logic_cells =
+          rep.logic_cells ? Measured::of(static_cast<double>(*rep.logic_cells)) : Measured::absent(why);
+      r.fmax_mhz = p.ok() && rep.fmax_mhz ? Measured::of(*rep.fmax_mhz) : Measured::absent(why);
     }
   }
   if (cacheable) cache.store(w, r);

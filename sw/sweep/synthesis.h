@@ -21,6 +21,9 @@ struct SynthesisSetup {
   std::string nextpnr = "nextpnr-ice40";
   std::string work_dir;                  // logs and netlists go to <work_dir>/w<W>/
   std::string cache_dir;                 // results per (hash, W); empty: no cache
+  // The part nextpnr-ice40 places on: the HX8K in its CT256 package, 7680 logic cells.
+  std::string pnr_part_name = "HX8K";
+  std::vector<std::string> pnr_part_args = {"--hx8k", "--package", "ct256"};
   double pnr_target_mhz = 50.0;          // nextpnr's timing target (--freq)
   unsigned pnr_seed = 1;                 // placement seed, fixed so reruns agree
 };

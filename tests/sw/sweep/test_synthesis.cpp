@@ -85,6 +85,19 @@ TEST(Synthesis, MissingToolsAreStatedNotEstimated) {
   EXPECT_FALSE(std::filesystem::exists(SynthCache(no_nextpnr.cache_dir, key).path(8)));
 }
 
+TEST(Synthesis, ADesignTooBigForThePartSaysSoAndKeepsItsCellCount) {
+  SynthesisSetup s = tiny_setup(test::fresh_dir());
+  s.fpga_top = test::fixture("too_big_fpga_top.sv");
+  s.pnr_part_name = "LP384";
+  s.pnr_part_args = {"--lp384"};
+  const SynthResult r = synthesize(8, s, synthesis_key(s));
+  EXPECT_TRUE(r.cells.ok()) << r.cells.reason;  // interp_top itself is measured
+  ASSERT_TRUE(r.ice40_logic_cells.ok()) << r.ice40_logic_cells.reason;
+  EXPECT_GT(*r.ice40_logic_cells.value, 384.0);
+  expect_reason(r.fmax_mhz, "too big for the LP384: ", "fmax_mhz");
+  EXPECT_NE(r.fmax_mhz.reason.find(" of 384 logic cells"), std::string::npos) << r.fmax_mhz.reason;
+}
+
 TEST(SynthCache, KeepsValuesAndReasonsAndTheKeyFollowsTheContent) {
   const std::string dir = test::fresh_dir();
   SynthResult r;
