@@ -72,7 +72,7 @@ int run(const SweepArgs& a) {
   setup.rtl_variant = default_rtl_variant_setup(a.cache);
   setup.rtl_variant.clock_hz = a.clock_hz;
   setup.rtl_variant.reader_cps = a.reader_cps;
-  setup.tape_dir = (a.cache.empty() ? default_cache_dir() : a.cache) + "/tapes";
+  setup.tape_dir = default_tape_dir(a.cache);
 
   firststage::InputOptions io;
   io.airfoil_chord_mm = a.airfoil_chord_mm;

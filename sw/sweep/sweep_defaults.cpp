@@ -8,11 +8,11 @@
 namespace ncinterp::sweep {
 namespace {
 
-std::string or_default(const std::string& dir) { return dir.empty() ? default_cache_dir() : dir; }
+std::string or_default(const std::string& dir) { return dir.empty() ? std::string(build::kCacheDir) : dir; }
 
 }  // namespace
 
-std::string default_cache_dir() { return build::kCacheDir; }
+std::string default_tape_dir(const std::string& cache_dir) { return or_default(cache_dir) + "/tapes"; }
 
 SynthesisSetup default_synthesis_setup(const std::string& cache_dir) {
   SynthesisSetup s;

@@ -16,6 +16,7 @@ namespace ncinterp::sweep {
 SynthesisSetup default_synthesis_setup(const std::string& cache_dir = "");
 // Variant build trees go to <cache_dir>/rtl.
 RtlVariantSetup default_rtl_variant_setup(const std::string& cache_dir = "");
-std::string default_cache_dir();
+// The tapes the variants play: <cache_dir>/tapes.
+std::string default_tape_dir(const std::string& cache_dir = "");
 
 }  // namespace ncinterp::sweep
