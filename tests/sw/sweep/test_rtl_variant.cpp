@@ -5,6 +5,7 @@
 
 #include "inputs/contour_inputs.h"
 #include "rtl_variant.h"
+#include "scratch_dir_test.h"
 #include "sweep_defaults.h"
 #include "sweep_test_support.h"
 #include "tape_measurement.h"
@@ -12,15 +13,18 @@
 namespace ncinterp::sweep {
 namespace {
 
-TEST(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
+using RtlVariantHeavy = ncinterp::test::ScratchDirTest;
+using RtlVariant = ncinterp::test::ScratchDirTest;
+
+TEST_F(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
   RtlVariantSetup s = default_rtl_variant_setup(std::string(NCINTERP_SWEEP_TEST_WORK) + "/variant-cache");
   s.reader_cps = 100000;
   MeasureSetup m;
   m.first_stage.feed_mm_min = 20000;
   m.reader_cps = s.reader_cps;
-  const std::string path = test::example("contours/circle_r50.json");
-  const SweepInput circle{path, firststage::read_contour(path, firststage::InputOptions{})};
-  const std::string tape = test::fresh_dir() + "/circle_w8.tape";
+  const std::string input = test::example("contours/circle_r50.json");
+  const SweepInput circle{input, firststage::read_contour(input, firststage::InputOptions{})};
+  const std::string tape = path("circle_w8.tape");
   const InputResult in = measure_input(circle, 8, m, tape);
   ASSERT_TRUE(in.measured()) << in.failure;
 
@@ -31,8 +35,8 @@ TEST(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
   EXPECT_EQ(r.summary, "match on 1 tapes, " + std::to_string(in.cycles) + " clocks");
 }
 
-TEST(RtlVariant, ABrokenRtlFileGivesTheBuildFailureWithVerilatorsReason) {
-  RtlVariantSetup s = default_rtl_variant_setup(test::fresh_dir());
+TEST_F(RtlVariant, ABrokenRtlFileGivesTheBuildFailureWithVerilatorsReason) {
+  RtlVariantSetup s = default_rtl_variant_setup(dir_.string());
   s.rtl_sources = {test::fixture("broken_interp_top.sv")};
   const RtlResult r = run_rtl_variant(s, 8, {"unused.tape"});
   EXPECT_FALSE(r.ran);
@@ -41,8 +45,8 @@ TEST(RtlVariant, ABrokenRtlFileGivesTheBuildFailureWithVerilatorsReason) {
   EXPECT_NE(r.summary.find("%Error"), std::string::npos) << r.summary;
 }
 
-TEST(RtlVariant, NoTapeNoRun) {
-  const RtlResult r = run_rtl_variant(default_rtl_variant_setup(test::fresh_dir()), 8, {});
+TEST_F(RtlVariant, NoTapeNoRun) {
+  const RtlResult r = run_rtl_variant(default_rtl_variant_setup(dir_.string()), 8, {});
   EXPECT_FALSE(r.ran);
   EXPECT_EQ(r.summary, "not run: no tape at this width");
 }

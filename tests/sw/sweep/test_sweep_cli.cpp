@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
-#include "subprocess.h"
+#include "cli_test.h"
 #include "sweep_test_support.h"
 
 namespace ncinterp::sweep {
@@ -36,14 +39,23 @@ std::string at(const std::vector<std::vector<std::string>>& rows, size_t row, co
   return c < h.size() ? rows.at(row).at(c) : "(no column " + column + ")";
 }
 
-TEST(SweepCli, SmallRangeWritesOneRowPerWidthAndThePlot) {
-  const std::string dir = test::fresh_dir();
-  const test::CommandResult r = test::run_ncinterp(
-      "sweep " + test::example("contours/circle_r50.json") + " --widths 10:11 --feed 20000 --reader-cps 100000 --jobs 2" +
-      " --no-synth --no-rtl --cache " + dir + " --csv " + dir + "/s.csv --svg " + dir + "/s.svg --markdown " + dir +
-      "/s.md");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto rows = csv_rows(read_text_file(dir + "/s.csv"));
+class SweepCli : public ncinterp::test::CliTest {
+ protected:
+  // Inputs run fast: about a second of machine time for the circle, a quick reader.
+  const std::string circle_ = test::example("contours/circle_r50.json");
+  const std::string fast_ = " --feed 20000 --reader-cps 100000";
+};
+
+TEST_F(SweepCli, SmallRangeWritesOneRowPerWidthAndThePlot) {
+  // The cache goes beside the scratch directory, so the directory holds the outputs only.
+  const std::string cache = dir_.string() + ".cache";
+  ASSERT_EQ(run("sweep " + circle_ + " --widths 10:11 --jobs 2 --no-synth --no-rtl" + fast_ + " --cache " + cache +
+                " --csv " + path("s.csv") + " --svg " + path("s.svg") + " --markdown " + path("s.md")),
+            0)
+      << stderr_;
+  std::filesystem::remove_all(cache);
+  EXPECT_EQ(files(), (std::vector<std::string>{"s.csv", "s.md", "s.svg"}));
+  const auto rows = csv_rows(slurp(path("s.csv")));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(at(rows, 1, "width"), "10");
   EXPECT_EQ(at(rows, 2, "width"), "11");
@@ -56,38 +68,36 @@ TEST(SweepCli, SmallRangeWritesOneRowPerWidthAndThePlot) {
     EXPECT_EQ(at(rows, i, "cells"), "not run (--no-synth)");
     EXPECT_EQ(at(rows, i, "rtl_cosim"), "not run (--no-rtl)");
   }
-  const std::string svg = read_text_file(dir + "/s.svg");
+  const std::string svg = slurp(path("s.svg"));
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_NE(read_text_file(dir + "/s.md").find("| 11 |"), std::string::npos);
-  EXPECT_NE(r.output.find("| width | blocks |"), std::string::npos) << "the table on stdout";
+  EXPECT_NE(slurp(path("s.md")).find("| 11 |"), std::string::npos);
+  EXPECT_NE(stdout_.find("| width | blocks |"), std::string::npos) << "the table on stdout";
 }
 
-TEST(SweepCli, BadOptionsAndInputsExitOneAndWriteNothing) {
-  const std::string dir = test::fresh_dir();
-  const std::string circle = test::example("contours/circle_r50.json");
-  const std::string outputs = " --no-synth --no-rtl --csv " + dir + "/s.csv --svg " + dir + "/s.svg";
-  test::CommandResult r = test::run_ncinterp("sweep " + circle + " --widths 11:10" + outputs);
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("--widths: 11:10 runs backwards"), std::string::npos) << r.output;
-  r = test::run_ncinterp("sweep " + circle + " --widths 8:40" + outputs);
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("40 is outside 2..32 bits"), std::string::npos) << r.output;
+TEST_F(SweepCli, BadOptionsAndInputsExitOneAndWriteNothing) {
+  const std::string outputs = " --no-synth --no-rtl --csv " + path("s.csv") + " --svg " + path("s.svg");
+  EXPECT_EQ(run("sweep " + circle_ + " --widths 11:10" + outputs), 1);
+  EXPECT_NE(stderr_.find("--widths: 11:10 runs backwards"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("sweep " + circle_ + " --widths 8:40" + outputs), 1);
+  EXPECT_NE(stderr_.find("40 is outside 2..32 bits"), std::string::npos) << stderr_;
   // G-code with G93 is a tape, not a contour: the first stage's reader names file and line.
-  r = test::run_ncinterp("sweep " + test::example("gear.nc") + " --widths 10" + outputs);
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("gear.nc:4: unsupported code G93"), std::string::npos) << r.output;
-  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  EXPECT_EQ(run("sweep " + test::example("gear.nc") + " --widths 10" + outputs), 1);
+  EXPECT_NE(stderr_.find("gear.nc:4: unsupported code G93"), std::string::npos) << stderr_;
+  EXPECT_TRUE(files().empty());
 }
 
-TEST(SweepCli, AToolNotOnPathIsStatedInItsColumns) {
-  const std::string dir = test::fresh_dir();
-  const test::CommandResult r = test::run_ncinterp(
-      "sweep " + test::example("contours/circle_r50.json") + " --widths 12 --feed 20000 --reader-cps 100000" +
-          " --no-rtl --cache " + dir + " --csv " + dir + "/s.csv",
-      "PATH=/nonexistent ");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto rows = csv_rows(read_text_file(dir + "/s.csv"));
+TEST_F(SweepCli, AToolNotOnPathIsStatedInItsColumns) {
+  const std::string cache = dir_.string() + ".cache";
+  const char* old_path = std::getenv("PATH");
+  const std::string saved = old_path ? old_path : "";
+  ::setenv("PATH", "/nonexistent", 1);  // the shell and ncinterp are run by absolute path
+  const int code =
+      run("sweep " + circle_ + " --widths 12 --no-rtl" + fast_ + " --cache " + cache + " --csv " + path("s.csv"));
+  ::setenv("PATH", saved.c_str(), 1);
+  std::filesystem::remove_all(cache);
+  ASSERT_EQ(code, 0) << stderr_;
+  const auto rows = csv_rows(slurp(path("s.csv")));
   ASSERT_EQ(rows.size(), 2u);
   for (const char* c : {"cells", "flip_flops", "ice40_luts", "ice40_logic_cells", "fmax_mhz"})
     EXPECT_EQ(at(rows, 1, c), "yosys not on PATH") << c;

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "subprocess.h"
+#include "scratch_dir_test.h"
 #include "sweep_test_support.h"
 #include "synth_cache.h"
 #include "synthesis.h"
@@ -23,13 +23,16 @@ SynthesisSetup tiny_setup(const std::string& dir) {
   return s;
 }
 
+using Synthesis = ncinterp::test::ScratchDirTest;
+using SynthCacheFiles = ncinterp::test::ScratchDirTest;
+
 void expect_reason(const Measured& m, const std::string& start, const char* column) {
   EXPECT_FALSE(m.ok()) << column << " = " << *m.value;
   EXPECT_EQ(m.reason.rfind(start, 0), 0u) << column << ": " << m.reason;
 }
 
-TEST(Synthesis, MeasuresTheStandInDesignAndCachesTheResult) {
-  const SynthesisSetup s = tiny_setup(test::fresh_dir());
+TEST_F(Synthesis, MeasuresTheStandInDesignAndCachesTheResult) {
+  const SynthesisSetup s = tiny_setup(dir_.string());
   const std::string key = synthesis_key(s);
   const SynthResult narrow = synthesize(4, s, key);
   const SynthResult wide = synthesize(12, s, key);
@@ -53,8 +56,8 @@ TEST(Synthesis, MeasuresTheStandInDesignAndCachesTheResult) {
   EXPECT_EQ(*again.fmax_mhz.value, *wide.fmax_mhz.value);
 }
 
-TEST(Synthesis, AFailingSynthesisKeepsItsReasonInItsRow) {
-  SynthesisSetup s = tiny_setup(test::fresh_dir());
+TEST_F(Synthesis, AFailingSynthesisKeepsItsReasonInItsRow) {
+  SynthesisSetup s = tiny_setup(dir_.string());
   s.rtl_sources = {test::fixture("broken_interp_top.sv")};
   const SynthResult r = synthesize(8, s, synthesis_key(s));
   expect_reason(r.cells, "yosys synth failed: ", "cells");
@@ -65,8 +68,8 @@ TEST(Synthesis, AFailingSynthesisKeepsItsReasonInItsRow) {
   expect_reason(r.fmax_mhz, "yosys synth_ice40 (harness) failed: ", "fmax_mhz");
 }
 
-TEST(Synthesis, MissingToolsAreStatedNotEstimated) {
-  const std::string dir = test::fresh_dir();
+TEST_F(Synthesis, MissingToolsAreStatedNotEstimated) {
+  const std::string dir = dir_.string();
   SynthesisSetup no_yosys = tiny_setup(dir);
   no_yosys.yosys = "/nonexistent/yosys";
   const SynthResult a = synthesize(8, no_yosys, synthesis_key(no_yosys));
@@ -85,8 +88,8 @@ TEST(Synthesis, MissingToolsAreStatedNotEstimated) {
   EXPECT_FALSE(std::filesystem::exists(SynthCache(no_nextpnr.cache_dir, key).path(8)));
 }
 
-TEST(Synthesis, ADesignTooBigForThePartSaysSoAndKeepsItsCellCount) {
-  SynthesisSetup s = tiny_setup(test::fresh_dir());
+TEST_F(Synthesis, ADesignTooBigForThePartSaysSoAndKeepsItsCellCount) {
+  SynthesisSetup s = tiny_setup(dir_.string());
   s.fpga_top = test::fixture("too_big_fpga_top.sv");
   s.pnr_part_name = "LP384";
   s.pnr_part_args = {"--lp384"};
@@ -98,8 +101,8 @@ TEST(Synthesis, ADesignTooBigForThePartSaysSoAndKeepsItsCellCount) {
   EXPECT_NE(r.fmax_mhz.reason.find(" of 384 logic cells"), std::string::npos) << r.fmax_mhz.reason;
 }
 
-TEST(SynthCache, KeepsValuesAndReasonsAndTheKeyFollowsTheContent) {
-  const std::string dir = test::fresh_dir();
+TEST_F(SynthCacheFiles, KeepsValuesAndReasonsAndTheKeyFollowsTheContent) {
+  const std::string dir = dir_.string();
   SynthResult r;
   r.cells = Measured::of(6026);
   r.flip_flops = Measured::of(776);

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "inputs/contour_inputs.h"
+#include "scratch_dir_test.h"
 #include "sweep_test_support.h"
 #include "tape_measurement.h"
 
@@ -47,9 +48,11 @@ TEST(TapeMeasurement, BlocksFallAsTheRegisterWidensUntilTheToleranceLimitsTheCho
   EXPECT_EQ(blocks[blocks.size() - 2], blocks.back()) << "W 13 and 14: the tolerance limits the chords";
 }
 
-TEST(TapeMeasurement, GoldenModelAtWidthPlaysTheTapeWithinTheBounds) {
+using TapeFile = ncinterp::test::ScratchDirTest;
+
+TEST_F(TapeFile, GoldenModelAtWidthPlaysTheTapeWithinTheBounds) {
   const MeasureSetup setup = fast_setup();
-  const std::string tape = test::fresh_dir() + "/circle_w10.tape";
+  const std::string tape = path("circle_w10.tape");
   const InputResult r = measure_input(circle(), 10, setup, tape);
   ASSERT_TRUE(r.measured()) << r.failure;
   EXPECT_EQ(r.violations, 0u) << r.first_violation;
