@@ -121,7 +121,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
   cmd->add_option("--report", args->report, "JSON report: per block and overall errors, feed, violations");
   cmd->add_option("--blu", args->blu_mm, "BLU of the tape, mm (as given to `tape`)")->capture_default_str();
   cmd->add_option("--width", args->width, "increment register width W (as given to `tape`)")
-      ->check(CLI::Range(2, 30))
+      ->check(CLI::Range(2, 32))
       ->capture_default_str();
   cmd->add_option("--cutter-radius", args->cutter_radius_mm,
                   "the tape is the cutter centre at this radius: total error against the offset contour")

@@ -56,7 +56,7 @@ tape::Format tape_format(const FirstStageOptions& options) {
 void validate_options(const FirstStageOptions& o) {
   if (o.method < 1 || o.method > 3) throw std::invalid_argument("--method must be 1, 2 or 3");
   frac_digits_of(o.blu_mm);
-  if (o.width < 2 || o.width > 31) throw std::invalid_argument("--width must be 2..31 bits");
+  if (o.width < 2 || o.width > 32) throw std::invalid_argument("--width must be 2..32 bits");
   if (!(o.tol_mm > 0)) throw std::invalid_argument("--tol must be > 0");
   if (!(o.feed_mm_min > 0)) throw std::invalid_argument("--feed must be > 0");
   if (!(o.budget_blu >= 0)) throw std::invalid_argument("--budget must be >= 0");

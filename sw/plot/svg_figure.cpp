@@ -94,6 +94,10 @@ Range axis_range(const std::optional<Range>& given, const Extent& data, Scale s,
     const double pad = std::max(1e-9, std::abs(r.low) * 0.05);
     r = {r.low - pad, r.low + pad};
   }
+  // A log axis is labelled at whole decades only: one that holds none is widened to the
+  // decades around its data, so it always has a label at each end.
+  if (s == Scale::kLog10 && std::floor(r.high) < std::ceil(r.low))
+    r = {std::floor(r.low), std::ceil(r.high)};
   return r;
 }
 

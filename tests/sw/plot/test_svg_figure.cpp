@@ -64,6 +64,17 @@ TEST(SvgFigure, LogAxisDropsNonPositivePointsAndSplitsTheLine) {
             2);
 }
 
+TEST(SvgFigure, LogAxisWithinOneDecadeStillHasDecadeLabels) {
+  Panel p;
+  p.y_scale = Scale::kLog10;
+  p.legend = false;
+  p.series.push_back({"", {1, 2, 3}, {2.0, 3.0, 5.0}, Colour::kBlue});  // no decade inside
+  const std::string text = decoded_text(render_svg(one_panel(p)));
+  // PLplot writes 10^n as "10" and the exponent as separate texts.
+  EXPECT_NE(text.find("10\n0"), std::string::npos) << text;
+  EXPECT_NE(text.find("10\n1"), std::string::npos) << text;
+}
+
 TEST(SvgFigure, EqualAspectGivesSquareUnits) {
   // A 1 x 1 square in a wide page: its outline must come out as wide as it is tall.
   Panel p;

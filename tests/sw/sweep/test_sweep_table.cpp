@@ -54,13 +54,13 @@ TEST(SweepTable, TotalsAndWorstValuesOverEveryInput) {
 TEST(SweepTable, AnInputNotMeasuredIsTheReasonInsteadOfATotal) {
   InputResult refused;
   refused.input = "examples/b.nc";
-  refused.failure = "first stage: --width must be 2..31 bits";
+  refused.failure = "first stage: --width must be 2..32 bits";
   const Table t = sweep_table({row(32, {measured("a.json", 10, 0.5, 0.004, 1e-5), refused})});
   const auto& r = t.rows[0];
   for (const char* c : {"blocks", "tape_frames", "path_error_max_blu", "total_error_max_mm", "check", "cycles"})
-    EXPECT_EQ(r[t.column(c)], "b.nc: first stage: --width must be 2..31 bits") << c;
+    EXPECT_EQ(r[t.column(c)], "b.nc: first stage: --width must be 2..32 bits") << c;
   EXPECT_EQ(r[t.column("blocks a.json")], "10");
-  EXPECT_EQ(r[t.column("blocks b.nc")], "first stage: --width must be 2..31 bits");
+  EXPECT_EQ(r[t.column("blocks b.nc")], "first stage: --width must be 2..32 bits");
 }
 
 TEST(SweepTable, ACheckerViolationIsNamed) {
