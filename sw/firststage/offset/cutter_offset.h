@@ -5,19 +5,20 @@
 // outside/inside milling and whether the ordinate grows; with the normal taken as the left
 // normal of the direction of travel the same rule reads: +R when the cutter is on the left
 // (G41 sense), -R on the right (G42), for every line.
-// Corners: at a convex vertex (the path turns away from the cutter) turning by at most 90
-// degrees the two offset lines are intersected (the cutter touches both chords to their
-// ends: the part is exactly the chord polygon); beyond 90 degrees the centre goes around
-// the vertex on a polygon circumscribed about the circle of radius R (every vertex again an
-// intersection of tangent lines, each turning <= 90 degrees), so it never runs far out at
-// sharp corners such as a trailing edge. At a concave vertex the offset lines are
-// intersected before their ends (trimmed): the cutter touches both chords and cannot cut
-// into either (no gouge). A trimmed offset line whose direction reverses (the chord is
-// shorter than the cutter can follow) is dropped and its neighbours intersected. At the
-// ends of an open chain the path starts and ends on the normal offset of the chain's end
-// points; if the first or last line reverses there, it is dropped too and the path starts
-// (ends) where its neighbour's offset meets its offset, so the cutter never backs up into
-// the chord before it.
+// The path is the edge, on the cutter's side, of the region nearer than R to the chain (the
+// union of discs of radius R about the chords): offset segments, and arcs of radius R about
+// convex vertices; where two offset segments cross at a concave corner the edge turns from
+// one onto the other (neighbouring offset lines intersected, as in the paper), and chords the
+// cutter cannot follow (shorter than the trim at a sharp concave corner, walls of a notch
+// narrower than 2R) are simply not on it. Nothing on that edge is nearer than R to a chord:
+// no gouge, by construction.
+// Convex corners: up to a 90-degree turn the two offset lines are intersected (the cutter
+// touches both chords to their ends: the part is exactly the chord polygon); beyond 90
+// degrees the centre goes around the vertex on a polygon circumscribed about the circle of
+// radius R (every vertex again an intersection of tangent lines, each turning <= 90
+// degrees), so it never runs far out at sharp corners such as a trailing edge. An open
+// chain's path starts and ends on the circles about its end points, where the offsets of
+// the first and last chords that are on the edge meet them.
 #pragma once
 #include <vector>
 

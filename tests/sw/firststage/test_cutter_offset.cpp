@@ -14,24 +14,65 @@ namespace {
 
 using firststage::run_first_stage;
 
-// A contour piece with its own sampler: a line, or an arc by centre, radius and angles.
+// A contour piece with its own sampler: a line, an arc by centre, radius and angles, or a
+// cubic parabola y = k[0] x^3 + k[1] x^2 + k[2] x + k[3] for x from x0 to x1.
 struct Piece {
-  bool arc = false;
+  enum Kind { kLine, kArc, kCubic } kind = kLine;
   P2 a, b;                 // line
   P2 c;                    // arc
   double r = 0, a0 = 0, sweep = 0;
+  double k[4] = {0, 0, 0, 0}, x0 = 0, x1 = 0;  // cubic parabola
   P2 at(double s) const {
-    if (!arc) return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)};
-    return {c.x + r * std::cos(a0 + s * sweep), c.y + r * std::sin(a0 + s * sweep)};
+    switch (kind) {
+      case kLine: return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)};
+      case kArc: return {c.x + r * std::cos(a0 + s * sweep), c.y + r * std::sin(a0 + s * sweep)};
+      case kCubic: {
+        const double x = x0 + s * (x1 - x0);
+        return {x, ((k[0] * x + k[1]) * x + k[2]) * x + k[3]};
+      }
+    }
+    return {};
   }
-  double length() const { return arc ? std::fabs(sweep) * r : std::hypot(b.x - a.x, b.y - a.y); }
+  double length() const {
+    if (kind == kLine) return std::hypot(b.x - a.x, b.y - a.y);
+    if (kind == kArc) return std::fabs(sweep) * r;
+    double len = 0;  // only sizes the sampling: a fine polyline is enough
+    for (int i = 0; i < 1000; ++i) {
+      const P2 p = at(i / 1000.0), q = at((i + 1) / 1000.0);
+      len += std::hypot(q.x - p.x, q.y - p.y);
+    }
+    return len;
+  }
   Segment segment() const {
-    return arc ? Segment::arc({c.x, c.y}, r, a0, sweep) : Segment::line({a.x, a.y}, {b.x, b.y});
+    if (kind == kLine) return Segment::line({a.x, a.y}, {b.x, b.y});
+    if (kind == kArc) return Segment::arc({c.x, c.y}, r, a0, sweep);
+    return Segment::cubic_parabola(k[0], k[1], k[2], k[3], x0, x1);
   }
 };
 
-Piece line(P2 a, P2 b) { return {false, a, b, {}, 0, 0, 0}; }
-Piece arc(P2 c, double r, double a0, double sweep) { return {true, {}, {}, c, r, a0, sweep}; }
+Piece line(P2 a, P2 b) {
+  Piece p;
+  p.a = a;
+  p.b = b;
+  return p;
+}
+Piece arc(P2 c, double r, double a0, double sweep) {
+  Piece p;
+  p.kind = Piece::kArc;
+  p.c = c;
+  p.r = r;
+  p.a0 = a0;
+  p.sweep = sweep;
+  return p;
+}
+Piece cubic(const double (&k)[4], double x0, double x1) {
+  Piece p;
+  p.kind = Piece::kCubic;
+  for (int i = 0; i < 4; ++i) p.k[i] = k[i];
+  p.x0 = x0;
+  p.x1 = x1;
+  return p;
+}
 
 Contour contour_of_pieces(const std::vector<Piece>& pieces) {
   std::vector<Segment> segs;
@@ -178,6 +219,58 @@ TEST_P(Offset, NotchNarrowerThanTheCutterIsNotGouged) {
                                  arc({20, 20}, 2.0, 0.0, -M_PI), line({18, 20}, {0, 20}), line({0, 20}, {0, 0})};
   const FirstStageOptions o = options(3.0, false);
   expect_band(check_offset(plate, o, [](P2 p) { return std::hypot(p.x - 20, p.y - 20) < 6.5; }), o);
+}
+
+TEST_P(Offset, ConcaveCornerBetweenCurvedSpansIsTrimmed) {
+  // Soak seed 8 (docs/verification.md section 8): two cubic parabolas of its chain, each
+  // bending gently away from the cutter on the left, meet in a valley where the path turns
+  // toward the cutter by 93 degrees. Every joint between chords of a span is slightly
+  // convex; the corner trims both neighbouring offset lines by R tan(turn / 2) = 3.7 mm,
+  // past several chords (W = 10 keeps them under 1.03 mm). Those chords must be dropped, not
+  // followed past the corner and back (the fishtail that cut 3.56 mm into the part). Cut
+  // from the right the same corner is convex (turn > 90 degrees: the polygon around it).
+  const double xc = 83.675252134354409;  // the corner
+  const double k3[4] = {-3.0175072969270059e-05, -0.0022015105485997796, -0.3131163176584576,
+                        67.237398792817615};
+  const double k4[4] = {-0.00017691956922019807, 0.036745173841388284, -1.5853258209999175,
+                        -13.026038865453671};
+  const std::vector<Piece> valley{cubic(k3, 60.768467225358975, xc), cubic(k4, xc, 108.18048868741303)};
+  const P2 corner = valley[1].at(0.0);
+  const auto slope = [&](const double (&k)[4]) { return (3 * k[0] * xc + 2 * k[1]) * xc + k[2]; };
+  const double turn = std::atan(slope(k4)) - std::atan(slope(k3));
+  ASSERT_GT(turn, M_PI / 2);  // toward the left: concave for a cutter on the left
+  const double radius = 3.56;
+  for (const bool left : {true, false}) {
+    SCOPED_TRACE(left ? "left (concave corner)" : "right (convex corner)");
+    FirstStageOptions o = options(radius, left);
+    o.tol_mm = 0.005;
+    o.width = 10;
+    // A disc of radius R in the valley touches each side about R tan(turn / 2) from the
+    // corner (a little nearer, as the sides fall away from it): nearer is out of its reach.
+    const double reach = 1.1 * radius * std::tan(turn / 2);
+    expect_band(check_offset(valley, o, [&](P2 p) {
+      return left && std::hypot(p.x - corner.x, p.y - corner.y) < reach;
+    }), o);
+  }
+}
+
+TEST_P(Offset, ShortChordTurningTowardTheCutterLeavesNothing) {
+  // Soak seed 839: the last cubic parabola of its chain, then the part's side straight down
+  // (a convex corner for the cutter on the left). At BLU 0.01 the chain's chords end 1 BLU
+  // diagonally before the rounded span end, and that 1-BLU chord turns toward the cutter by
+  // about 57 degrees. Its offset line, trimmed by R tan(28.5 deg) = 1.5 mm, starts far beyond
+  // the chord, so following it keeps the cutter off the chord before it: 0.14 mm left (tol
+  // 0.05). The cutter must go from that chord's offset around the corner instead.
+  const double k5[4] = {0.00060606433606152715, -0.23696115456914191, 30.662425696170882,
+                        -1321.8866380302138};
+  const double x0 = 116.87443475377074, x1 = 134.30420270257304;
+  const Piece curve = cubic(k5, x0, x1);
+  const P2 end = curve.at(1.0);
+  const std::vector<Piece> chain{curve, line(end, {end.x, end.y - 10.0})};
+  FirstStageOptions o = options(2.76, true);
+  o.tol_mm = 0.05;
+  o.blu_mm = 0.01;
+  expect_band(check_offset(chain, o, kReachable), o);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, Offset, ::testing::Values(1, 2, 3));
