@@ -100,6 +100,17 @@ TEST_F(CheckCli, BadContourIsOneLineNamingFileAndLine) {
   EXPECT_FALSE(std::filesystem::exists(report));
 }
 
+TEST_F(CheckCli, CutterRadiusWithoutTheTapeStartIsRefused) {
+  // Measured from the contour's start, a cutter-centre tape would fail everywhere.
+  const std::string tape = circle_tape();
+  const std::string report = path("r.json");
+  const int code = run("check " + tape + " --contour " + example_path("circle_r50.json") +
+                       " --cutter-radius 2 --report " + report);
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(stderr_.find("--start"), std::string::npos) << stderr_;
+  EXPECT_FALSE(std::filesystem::exists(report));
+}
+
 TEST_F(CheckCli, MissingTapeFileIsAnError) {
   const int code = run("check " + path("nope.tape"));
   EXPECT_EQ(code, 1);
