@@ -81,9 +81,8 @@ bool straight_on(Vec2 d0, Vec2 d1) {
 class ChainOffset {
  public:
   ChainOffset(const std::vector<Vec2>& pts, const std::vector<int>& elements, double r, bool left);
-  // The path's vertices and, per vertex after the first, the element of the move ending there;
-  // *dropped counts the chords the path does not follow at all.
-  void run(std::vector<Vec2>* out, std::vector<int>* out_elements, long* dropped);
+  // The path's vertices and, per vertex after the first, the element of the move ending there.
+  void run(std::vector<Vec2>* out, std::vector<int>* out_elements);
 
  private:
   struct Chord {
@@ -438,7 +437,7 @@ std::vector<int> ChainOffset::path_of(const std::vector<std::vector<int>>& curve
   return best_run;
 }
 
-void ChainOffset::run(std::vector<Vec2>* out, std::vector<int>* out_elements, long* dropped) {
+void ChainOffset::run(std::vector<Vec2>* out, std::vector<int>* out_elements) {
   if (chords_.empty()) return;
   make_edges();
   cut();
@@ -447,12 +446,6 @@ void ChainOffset::run(std::vector<Vec2>* out, std::vector<int>* out_elements, lo
   if (path.empty()) {
     if (!stretches_.empty()) throw std::runtime_error("the cutter offset does not close");
     return;  // the cutter fits nowhere
-  }
-  if (dropped) {
-    std::vector<bool> followed(chords_.size(), false);
-    for (const int s : path)
-      if (edges_[stretches_[s].edge].kind == Edge::kFront) followed[edges_[stretches_[s].edge].own] = true;
-    *dropped += std::count(followed.begin(), followed.end(), false);
   }
   // The vertices: each stretch's end, and the polygon about a vertex before it. el[i] is the
   // element of the move ending at v[i + 1].
@@ -519,15 +512,14 @@ void ChainOffset::run(std::vector<Vec2>* out, std::vector<int>* out_elements, lo
 // offset crosses the other wall. On the edge of the union none of that can happen: nothing
 // nearer than R to a chord is on it.
 void offset_chain(const std::vector<Vec2>& pts, const std::vector<int>& elements, double r,
-                  bool left, std::vector<Vec2>* out, std::vector<int>* out_elements, long* dropped) {
-  ChainOffset(pts, elements, r, left).run(out, out_elements, dropped);
+                  bool left, std::vector<Vec2>* out, std::vector<int>* out_elements) {
+  ChainOffset(pts, elements, r, left).run(out, out_elements);
 }
 
 }  // namespace
 
 std::vector<Move> offset_moves(GridPoint start, const std::vector<Move>& moves,
-                               const CutterOffsetOptions& opt, GridPoint* new_start,
-                               long* dropped) {
+                               const CutterOffsetOptions& opt, GridPoint* new_start) {
   std::vector<Move> out;
   out.reserve(moves.size() + 16);
   GridPoint cur = start;
@@ -558,7 +550,7 @@ std::vector<Move> offset_moves(GridPoint start, const std::vector<Move>& moves,
     }
     std::vector<Vec2> verts;
     std::vector<int> vel;
-    offset_chain(pts, elements, opt.radius, opt.left, &verts, &vel, dropped);
+    offset_chain(pts, elements, opt.radius, opt.left, &verts, &vel);
     if (!verts.empty()) {
       const GridPoint s = round_to_grid(verts[0]);
       if (first_chain && out.empty()) {

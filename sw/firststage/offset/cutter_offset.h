@@ -35,7 +35,6 @@ struct CutterOffsetOptions {
 // the offset chains. *new_start receives the offset path's start. Throws
 // std::runtime_error for arc moves (use --arcs chords with a cutter radius).
 std::vector<Move> offset_moves(GridPoint start, const std::vector<Move>& moves,
-                               const CutterOffsetOptions& options, GridPoint* new_start,
-                               long* dropped = nullptr);
+                               const CutterOffsetOptions& options, GridPoint* new_start);
 
 }  // namespace ncinterp::firststage
