@@ -21,9 +21,7 @@ using plot::Panel;
 using plot::Series;
 
 Series series_of(const Polyline& line, std::string label, Colour colour, double width = 1.0) {
-  Series s;
-  s.label = std::move(label);
-  s.colour = colour;
+  Series s{std::move(label), {}, {}, colour};
   s.width = width;
   for (const PlotPoint& p : line) s.x.push_back(p.x), s.y.push_back(p.y);
   return s;
@@ -31,10 +29,7 @@ Series series_of(const Polyline& line, std::string label, Colour colour, double 
 
 // Several runs as one series: NaN between runs breaks the line; only the first is labelled.
 Series series_of(const std::vector<Polyline>& runs, std::string label, Colour colour, double width = 1.0) {
-  Series s;
-  s.label = std::move(label);
-  s.colour = colour;
-  s.width = width;
+  Series s = series_of(Polyline{}, std::move(label), colour, width);
   for (const Polyline& run : runs) {
     for (const PlotPoint& p : run) s.x.push_back(p.x), s.y.push_back(p.y);
     s.x.push_back(std::numeric_limits<double>::quiet_NaN());
@@ -58,14 +53,20 @@ std::string um_text(double mm) {
   return buf;
 }
 
-Panel overview_panel(const CheckPlotData& d) {
+// A panel of the part's plane: mm on both axes at equal scale, showing window w.
+Panel plane_panel(std::string title, const PlotWindow& w) {
   Panel p;
-  p.title = "part: contour, programmed blocks, worst point";
+  p.title = std::move(title);
   p.x_label = "x (mm)";
   p.y_label = "y (mm)";
   p.equal_aspect = true;
-  p.x_range = plot::Range{d.overview.x0, d.overview.x1};
-  p.y_range = plot::Range{d.overview.y0, d.overview.y1};
+  p.x_range = plot::Range{w.x0, w.x1};
+  p.y_range = plot::Range{w.y0, w.y1};
+  return p;
+}
+
+Panel overview_panel(const CheckPlotData& d) {
+  Panel p = plane_panel("part: contour, programmed blocks, worst point", d.overview);
   if (!d.contour.empty()) p.series.push_back(series_of(d.contour, "contour", Colour::kBlack, 1.5));
   if (!d.rapids.empty()) {
     p.series.push_back(series_of(d.rapids, "rapid (G0)", Colour::kGrey));
@@ -80,14 +81,9 @@ Panel overview_panel(const CheckPlotData& d) {
 }
 
 Panel zoom_panel(const CheckPlotData& d) {
-  Panel p;
-  p.title = "worst point: N" + std::to_string(d.worst_block) + ", clock " +
-            std::to_string(d.worst_cycle) + ", " + um_text(d.worst_error_mm) + " µm";
-  p.x_label = "x (mm)";
-  p.y_label = "y (mm)";
-  p.equal_aspect = true;
-  p.x_range = plot::Range{d.zoom.x0, d.zoom.x1};
-  p.y_range = plot::Range{d.zoom.y0, d.zoom.y1};
+  Panel p = plane_panel("worst point: N" + std::to_string(d.worst_block) + ", clock " +
+                            std::to_string(d.worst_cycle) + ", " + um_text(d.worst_error_mm) + " µm",
+                        d.zoom);
   if (!d.zoom_contour.empty())
     p.series.push_back(series_of(d.zoom_contour, d.cutter ? "cutter-centre path (contour + R)" : "contour",
                                  Colour::kBlack, 1.5));
