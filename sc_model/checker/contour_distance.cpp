@@ -11,9 +11,6 @@ namespace {
 using firststage::SegmentKind;
 
 Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + t * (b - a); }
-// sqrt(x^2 + y^2) without std::hypot's overflow care: the checker's coordinates are BLU
-// (|x| < 2^40), far from overflow, and hypot is several times slower.
-double length(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 Vec2 mid(Vec2 a, Vec2 b) { return 0.5 * (a + b); }
 
 // A sub-piece of a cubic in Bezier form over [u0, u1] of the segment's parameter.
@@ -43,15 +40,6 @@ double wrap_angle(double a) {  // to (-pi, pi]
 }
 
 }  // namespace
-
-double distance_to_segment(Vec2 q, Vec2 a, Vec2 b, double* t_out) {
-  const Vec2 v = b - a;
-  const double l2 = dot(v, v);
-  double t = l2 > 0 ? dot(q - a, v) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  if (t_out) *t_out = t;
-  return length(q - (a + t * v));
-}
 
 double ContourDistance::Box::distance_sq(Vec2 q) const {
   const double dx = std::max({x0 - q.x, 0.0, q.x - x1});
@@ -131,7 +119,7 @@ void ContourDistance::search_arc(int s, Vec2 q, ContourFoot& best) const {
   const Vec2 c = seg.centre();
   const double r = seg.radius(), sweep = seg.sweep();
   const Vec2 v = q - c;
-  const double rq = length(v);
+  const double rq = norm(v);
   double u = 0.0;
   bool inside = false;
   if (rq > 0) {
@@ -152,7 +140,7 @@ void ContourDistance::search_arc(int s, Vec2 q, ContourFoot& best) const {
   }
   for (double ue : {0.0, 1.0}) {
     const Vec2 p = seg.point(ue);
-    const double d = length(q - p);
+    const double d = norm(q - p);
     if (d < best.distance) best = {d, s, ue, p};
   }
 }
@@ -174,7 +162,7 @@ void ContourDistance::search_cubic(int s, Vec2 q, ContourFoot& best) const {
     const double lower = dc - w;
     if (lower >= best.distance - kDistanceAccuracy) continue;  // cannot improve enough
     const Vec2 p = bezier_point(z, t);
-    const double d = length(q - p);
+    const double d = norm(q - p);
     if (d < best.distance) best = {d, s, z.u0 + t * (z.u1 - z.u0), p};
     if (best.distance - lower <= kDistanceAccuracy) continue;  // bracket narrow enough
     if (z.u1 - z.u0 < 1e-14 || top + 2 > 128) continue;       // numerical floor

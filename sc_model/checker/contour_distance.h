@@ -64,7 +64,6 @@ class ContourDistance {
   mutable int hint_ = 0;  // segment of the last answer: a good first upper bound
 };
 
-// Distance from q to the segment a-b, and the parameter t in [0, 1] of the nearest point.
-double distance_to_segment(Vec2 q, Vec2 a, Vec2 b, double* t = nullptr);
+using firststage::distance_to_segment;
 
 }  // namespace ncinterp::checker

@@ -24,5 +24,15 @@ inline Vec2 unit(Vec2 a) {
   double n = norm(a);
   return n > 0 ? Vec2{a.x / n, a.y / n} : Vec2{0.0, 0.0};
 }
+// Distance from q to the segment a-b; *t (if given) gets the nearest point's parameter in
+// [0, 1] (0 for a segment of zero length).
+inline double distance_to_segment(Vec2 q, Vec2 a, Vec2 b, double* t = nullptr) {
+  const Vec2 v = b - a;
+  const double l2 = dot(v, v);
+  double u = l2 > 0 ? dot(q - a, v) / l2 : 0.0;
+  u = u < 0.0 ? 0.0 : (u > 1.0 ? 1.0 : u);
+  if (t) *t = u;
+  return norm(q - (a + u * v));
+}
 
 }  // namespace ncinterp::firststage

@@ -11,13 +11,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * ab));
-}
-
 // One contour segment or one move, sampled at n + 1 evenly spaced points point(0..n), n
 // steps of about the sampling step. Consecutive pieces of one run (no rapid between them)
 // share their joint: the later one's point(0) is (up to rounding) the earlier one's point(n).
@@ -150,7 +143,7 @@ class Target {
 
   double distance(Vec2 p, Where w) {
     const Vec2* pts = points(w.chunk);
-    return segment_distance(p, pts[w.i], pts[w.i + 1]);
+    return distance_to_segment(p, pts[w.i], pts[w.i + 1]);
   }
 
   // Walks from w along the polyline while the distance to p decreases (at most a few
@@ -252,7 +245,7 @@ class Target {
     if (std::sqrt(dx * dx + dy * dy) >= best) return;
     const Vec2* pts = points(k);
     for (uint32_t i = 0; i < ch.count; ++i) {
-      const double d = segment_distance(p, pts[i], pts[i + 1]);
+      const double d = distance_to_segment(p, pts[i], pts[i + 1]);
       if (d < best) best = d, w = {k, i};
     }
   }
