@@ -50,13 +50,6 @@ class Grid {
   std::unordered_map<int64_t, std::vector<int>> cells_;
 };
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double l2 = dot(d, d);
-  const double t = l2 > 0 ? std::clamp(dot(p - a, d) / l2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * d));
-}
-
 // The path around centre c from angle a0 by the signed angle `sweep` at radius r: a polygon
 // circumscribed about the circle, each piece turning by at most 90 degrees, every vertex the
 // intersection of two tangents: the cutter touches the chord vertex all the way round and is
@@ -86,7 +79,7 @@ class ChainOffset {
 
  private:
   struct Chord {
-    Vec2 p, q, d, n;  // ends, unit direction, unit normal toward the cutter
+    Vec2 p, q, n;  // ends, unit normal toward the cutter
     int element;
     int from, to;     // vertices
   };
@@ -159,7 +152,6 @@ class ChainOffset {
   double sense_;  // +1: circles counter-clockwise (cutter on the right)
   std::vector<Chord> chords_;
   std::vector<Vec2> vertices_;
-  std::vector<int> vertex_element_;               // the chord before the vertex
   std::vector<std::array<int, 2>> vertex_chords_;  // chords before and after (-1: none)
   double cell_ = 1.0;                              // grid cell size
   Grid near_;                                      // chords
@@ -175,19 +167,13 @@ ChainOffset::ChainOffset(const std::vector<Vec2>& pts, const std::vector<int>& e
   for (size_t k = 0; k + 1 < pts.size(); ++k) {
     const Vec2 d = unit(pts[k + 1] - pts[k]);
     if (norm(d) == 0.0) continue;
-    if (vertices_.empty()) {
-      vertices_.push_back(pts[k]);
-      vertex_element_.push_back(elements[k]);
-    }
+    if (vertices_.empty()) vertices_.push_back(pts[k]);
     const int from = static_cast<int>(vertices_.size()) - 1;
     vertices_.push_back(pts[k + 1]);
-    vertex_element_.push_back(elements[k]);
-    chords_.push_back({pts[k], pts[k + 1], d, left ? perp(d) : -1.0 * perp(d), elements[k], from, from + 1});
+    chords_.push_back({pts[k], pts[k + 1], left ? perp(d) : -1.0 * perp(d), elements[k], from, from + 1});
   }
   if (closed_ && !chords_.empty()) {  // the last vertex is the first
     vertices_.pop_back();
-    vertex_element_.front() = vertex_element_.back();
-    vertex_element_.pop_back();
     chords_.back().to = 0;
   }
   vertex_chords_.assign(vertices_.size(), {-1, -1});
@@ -216,7 +202,8 @@ void ChainOffset::make_edges() {
     e.kind = Edge::kCircle;
     e.c = vertices_[v];
     e.own = static_cast<int>(v);
-    e.element = vertex_element_[v];
+    const auto [before, after] = vertex_chords_[v];
+    e.element = chords_[before >= 0 ? before : after].element;  // the chord before, if any
     edges_.push_back(e);
   }
   for (size_t k = 0; k < chords_.size(); ++k) {
@@ -408,8 +395,11 @@ double ChainOffset::front_length(const std::vector<int>& curve) const {
 // the circle first, so the cutter never backs up into the chord before it).
 std::vector<int> ChainOffset::path_of(const std::vector<std::vector<int>>& curves) const {
   const std::vector<int>* best = nullptr;
-  for (const auto& c : curves)
-    if (front_length(c) > 0 && (!best || front_length(c) > front_length(*best))) best = &c;
+  double best_length = 0;
+  for (const auto& c : curves) {
+    const double length = front_length(c);
+    if (length > best_length) best = &c, best_length = length;
+  }
   if (!best) return {};
   std::vector<int> curve = *best;
   const auto kind_of = [&](int s) { return edges_[stretches_[s].edge].kind; };
@@ -425,10 +415,12 @@ std::vector<int> ChainOffset::path_of(const std::vector<std::vector<int>>& curve
   const auto back = std::find_if(curve.begin(), curve.end(), [&](int s) { return kind_of(s) == Edge::kBack; });
   std::rotate(curve.begin(), back == curve.end() ? curve.begin() : back, curve.end());
   std::vector<int> run, best_run;
+  double best_run_length = 0;
   for (const int s : curve) {
     if (kind_of(s) != Edge::kBack) run.push_back(s);
     if (kind_of(s) == Edge::kBack || s == curve.back()) {
-      if (front_length(run) > front_length(best_run)) best_run = run;
+      const double length = front_length(run);
+      if (length > best_run_length) best_run = run, best_run_length = length;
       run.clear();
     }
   }
