@@ -78,7 +78,7 @@ int run(TapeArgs a) {
     chords += res.chords_per_element[i];
     per_element.push_back({{"element", contour.element_names[i]}, {"chords", res.chords_per_element[i]}});
   }
-  const bool is_frames = a.output.size() >= 5 && a.output.compare(a.output.size() - 5, 5, ".tape") == 0;
+  const bool is_frames = tape::is_frame_file(a.output);
   nlohmann::json report = {
       {"input", a.input},
       {"input_kind", input_kind_name(input_kind_of(a.input))},
@@ -121,7 +121,8 @@ int run(TapeArgs a) {
         {"measure", measure_s}}},
   };
 
-  tape::write_tape_file(a.output, program, format);
+  // What was read back is what is written (write_tape_file would format it again).
+  write_file_atomically(a.output, is_frames ? frames : std::vector<uint8_t>(text.begin(), text.end()));
   if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
   std::printf("%s: %zu blocks (%ld chords, %ld arc blocks), %zu frames, max deviation %.4f mm "
               "(tol %g mm)\n",

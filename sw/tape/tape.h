@@ -73,6 +73,8 @@ struct ParseResult {
 ParseResult parse_frames_partial(const std::vector<uint8_t>& frames, const Format& format);
 // True when the frame has an even number of ones (ISO 840).
 bool has_even_parity(uint8_t frame);
+// A .tape file holds the frames as punched; any other is plain text.
+bool is_frame_file(const std::string& path);
 // Reads a tape file: .tape files are frames as they are; any other file (.nc, .ngc, .txt)
 // is plain text and gets parity added. Throws std::runtime_error naming the file.
 std::vector<uint8_t> load_frames(const std::string& path);

@@ -10,14 +10,10 @@
 
 namespace ncinterp::tape {
 
-namespace {
-
 bool is_frame_file(const std::string& path) {
   const std::string ext = ".tape";
   return path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
 }
-
-}  // namespace
 
 std::vector<uint8_t> load_frames(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
