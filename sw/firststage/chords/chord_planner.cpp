@@ -133,10 +133,8 @@ void ChordPlanner::plan(const Span& span, GridPoint start, GridPoint end,
       if (!sol.ok) break;
       Vec2 e = sol.end;
       double te = sol.t_end;
-      if (sol.reaches_end && sol.t_cross < t_hi) {  // Tamm's fig. 9: end at the crossing
-        te = sol.t_cross;
-        e = span.point(te);
-      } else if (ends_at_crossing(span, sol, ta, end)) {
+      // Tamm's fig. 9: end at the crossing.
+      if ((sol.reaches_end && sol.t_cross < t_hi) || ends_at_crossing(span, sol, ta, end)) {
         te = sol.t_cross;
         e = span.point(te);
       }

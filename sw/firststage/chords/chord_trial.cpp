@@ -38,9 +38,13 @@ ChordSolution trial_chord(const Span& span, const ChordRequest& req, double* ste
   h = std::min(h, room);
   ChordSolution sol;
   const auto fits = [&](double x) { return deviation(x) <= allowed; };
-  if (!fits(h)) {
-    for (int it = 0; it < kTrialShrinks && !fits(h); ++it) h /= kTrialStepFactor;
-    if (!fits(h)) {
+  bool ok = fits(h);
+  if (!ok) {
+    for (int it = 0; it < kTrialShrinks && !ok; ++it) {
+      h /= kTrialStepFactor;
+      ok = fits(h);
+    }
+    if (!ok) {
       // From a start off the curve a short chord is steep (it crosses the curve almost
       // along the normal) and only a longer one fits: look along the whole room in coarse
       // steps for the longest chord that fits, then refine it as above.

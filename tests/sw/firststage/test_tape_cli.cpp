@@ -4,13 +4,10 @@
 // `ncinterp play` plays to the end at the expected position; bad input or options give one
 // line naming the file and line, a non-zero exit and no output file.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <cstdlib>
+#include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "cli_test.h"
 #include "inputs/contour_inputs.h"
@@ -22,6 +19,13 @@ namespace ncinterp::test {
 namespace {
 
 const std::string kExamples = NCINTERP_EXAMPLES_DIR;
+
+// A file name as a GoogleTest parameter name (letters and digits only).
+std::string test_name_of(std::string name) {
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return name;
+}
 
 class TapeCli : public CliTest {
  protected:
@@ -104,12 +108,7 @@ TEST_P(TapeCliExamples, EveryMethodAndArcModeMakesAPlayableTape) {
 INSTANTIATE_TEST_SUITE_P(Examples, TapeCliExamples,
                          ::testing::Values("circle_r50.json", "reference_table.json", "profile.json", "part.nc",
                                            "naca2412_selig.dat", "naca2412_lednicer.dat"),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           for (char& ch : n)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return n;
-                         });
+                         [](const auto& info) { return test_name_of(info.param); });
 
 TEST_F(TapeCli, CutterOffsetTapePlaysAndClosesEachChain) {
   const std::string input = kExamples + "/part.nc";
@@ -195,12 +194,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"lednicer.dat", "AIRFOIL\n3. 3.\n\n0 0\n0.5 0.05\n1 0\n\n0 0\n0.5 -0.05\n", "9: Lednicer header announces 3 + 3 points"},
         BadCase{"contour.txt", "G1 X1\n", "0: unknown input kind '.txt'"},
         BadCase{"missing.json", nullptr, "0: cannot open the file"}),
-    [](const auto& info) {
-      std::string n = info.param.name;
-      for (char& ch : n)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      return n;
-    });
+    [](const auto& info) { return test_name_of(info.param.name); });
 
 TEST_F(TapeCli, BadOptionsOneLineNoOutput) {
   const std::string input = kExamples + "/circle_r50.json";
