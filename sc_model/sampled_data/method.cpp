@@ -31,7 +31,6 @@ const char* method_description(Method m) {
   return "?";
 }
 
-const char* starter_name(Starter s) { return s == Starter::kK1 ? "k1" : "k7"; }
 
 std::optional<Starter> parse_starter(std::string_view text) {
   if (text == "k1" || text == "K1") return Starter::kK1;

@@ -25,7 +25,6 @@ const char* method_description(Method m);  // "Euler", "Taylor", ...
 // this self-starting method; from then on the method runs as written.
 enum class Starter { kK1, kK7 };
 
-const char* starter_name(Starter s);  // "k1", "k7"
 std::optional<Starter> parse_starter(std::string_view text);
 
 }  // namespace ncinterp::sampled

@@ -61,9 +61,6 @@ int run(const SweepArgs& a) {
   firststage::validate_options(a.first_stage);  // the width is checked per row
   if (!(a.clock_hz > 0)) throw std::invalid_argument("--clock-hz must be > 0");
   if (!(a.reader_cps > 0)) throw std::invalid_argument("--reader-cps must be > 0");
-#ifndef NCINTERP_SWEEP_HAS_PLOT
-  if (!a.svg.empty()) throw std::invalid_argument("--svg: this build has no plot library (sw/plot)");
-#endif
   setup.jobs = a.jobs;
   setup.synthesis = !a.no_synth;
   setup.synth = default_synthesis_setup(a.cache);
@@ -99,7 +96,6 @@ int run(const SweepArgs& a) {
                                                         to_markdown(table, input_columns) + "\n" +
                                                         to_markdown(table, kHardwareColumns);
   std::string svg;
-#ifdef NCINTERP_SWEEP_HAS_PLOT
   if (!a.svg.empty()) {
     PlotContext ctx;
     ctx.blu_mm = a.first_stage.blu_mm;
@@ -107,7 +103,6 @@ int run(const SweepArgs& a) {
     ctx.title = "ncinterp sweep --widths " + a.widths + " (" + std::to_string(a.inputs.size()) + " inputs)";
     svg = plot::render_svg(sweep_figure(rows, ctx));
   }
-#endif
   if (!a.csv.empty()) write_file_atomically(a.csv, csv);
   if (!a.markdown.empty()) write_file_atomically(a.markdown, markdown);
   if (!a.svg.empty()) write_file_atomically(a.svg, svg);
