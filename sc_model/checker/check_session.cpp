@@ -70,6 +70,10 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   if (!(setup.clock_hz > 0)) throw std::invalid_argument("--clock-hz must be > 0");
   if (!(setup.reader_cps > 0)) throw std::invalid_argument("--reader-cps must be > 0");
   if (!(setup.tol_mm > 0)) throw std::invalid_argument("--tol must be > 0");
+  // The cutter-centre path starts R off the contour, where only the first stage knows.
+  if (setup.cutter_radius_mm > 0 && contour && !setup.start_mm)
+    throw std::invalid_argument(
+        "--cutter-radius needs --start X,Y: the cutter path's start, start_mm in the report of `ncinterp tape`");
   if (setup.fault && setup.engine != EngineKind::kGolden)
     throw std::invalid_argument("faults are injected through the golden model's test hook only");
   if (setup.engine == EngineKind::kRtl && !rtl_available())

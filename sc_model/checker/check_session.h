@@ -30,7 +30,8 @@ struct CheckSetup {
   double reader_cps = 1000.0;      // tape reader, characters per second
   EngineKind engine = EngineKind::kGolden;
   double tol_mm = 0.01;            // delta: the total error's bound
-  // Absolute grid point of the tape start (mm); unset: the contour's start on the grid.
+  // Absolute grid point of the tape start (mm); unset: the contour's start on the grid
+  // (refused with a cutter radius: the offset path starts elsewhere).
   std::optional<firststage::Vec2> start_mm;
   double cutter_radius_mm = 0.0;
   bool cutter_left = true;

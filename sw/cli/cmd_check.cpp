@@ -50,10 +50,6 @@ unsigned frac_digits_for(double blu_mm) {
 }
 
 int run(const CheckArgs& a) {
-  // The cutter-centre path starts R off the contour, where only the first stage knows.
-  if (a.cutter_radius_mm > 0 && !a.contour.empty() && a.start.empty())
-    throw std::invalid_argument(
-        "--cutter-radius needs --start X,Y: the cutter path's start, start_mm in the report of `ncinterp tape`");
   checker::CheckSetup setup;
   setup.format.frac_digits = frac_digits_for(a.blu_mm);
   setup.format.inc_width = a.width;
