@@ -32,16 +32,16 @@ void ArcPrepare::reset() {
 }
 
 ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
-  const ArcGeometry g = arc_geometry(w, inc_width_);
   Result r;
   if (!running_) {
     // Start edge: geometric errors are final at once; otherwise load the dry run and
-    // the radius check.
-    if (g.error != TapeError::kNone) {
+    // the radius check. The words stay as they are until done: the geometry is kept.
+    g_ = arc_geometry(w, inc_width_);
+    if (g_.error != TapeError::kNone) {
       r.done = true;
-      r.error = g.error;
+      r.error = g_.error;
     }
-    dry_.load(g, !w.dx_neg, !w.dy_neg);
+    dry_.load(g_, !w.dx_neg, !w.dy_neg);
     step_ = 0;
     count_ = 0;
     a_ = sq_ = e_ = 0;
@@ -61,7 +61,7 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
     dry_.iterate();
     step_ = step_ + feed < kStepClamp ? step_ + feed : kStepClamp;  // feed < 2^63: no wrap
   }
-  if (!check_done) check_step(g);
+  if (!check_done) check_step(g_);
   return r;
 }
 

@@ -40,16 +40,15 @@ class ArcPrepare {
   // the RTL's step register is FeedWidth + W + 1 bits wide and never wraps, and a step that
   // large saturates any feed modulus (M < 2^62), so the clamp is never observable.
   uint64_t step() const { return step_; }
-  // Clocks of the radius check after the start edge (2W + 3).
-  unsigned check_steps() const { return check_steps_; }
 
  private:
   void check_step(const ArcGeometry& g);  // one step of the bit-serial radius check
 
   unsigned inc_width_;
-  unsigned check_steps_;
+  unsigned check_steps_;     // clocks of the radius check after the start edge (2W + 3)
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
+  ArcGeometry g_;           // of the arc being prepared, from its start edge
   CircleDda dry_;           // the dry-run DDA
   uint64_t step_ = 0;       // F added once per dry-run iteration: F * N
   // Bit-serial radius check: count_ steps done; a_ = x0^2 + y0^2; sq_ = x1^2 + y1^2,

@@ -39,11 +39,15 @@ class GoldenTapeDecoder {
   explicit GoldenTapeDecoder(const InterpConfig& cfg);
 
   void reset();
-  // Nothing would change at this edge: no frame offered or waiting, no block prepared or
-  // held, and tape_end neither changing nor ending the tape early.
-  bool quiet(const InterpInputs& in) const {
-    return !in.frame_valid && !in_valid_ && state_ != State::kHold && state_ != State::kArc &&
-           in.tape_end == tape_end_q_ && !(tape_end_q_ && state_ <= State::kComment);
+  // Nothing would change at this edge: tape_end unchanged and, holding a block, the buffer
+  // full and no frame taken (a waiting frame stays waiting); otherwise no frame offered or
+  // waiting, no arc being prepared, and the tape not ending early. Most clocks of a line
+  // program are spent holding the next block while the buffer is full.
+  bool quiet(const InterpInputs& in, bool buffer_empty) const {
+    if (in.tape_end != tape_end_q_) return false;
+    if (state_ == State::kHold) return !buffer_empty && !(in.frame_valid && ready_);
+    return !in.frame_valid && !in_valid_ && state_ != State::kArc &&
+           !(tape_end_q_ && state_ <= State::kComment);
   }
   // One rising edge. buffer_empty: the block buffer can take a held block at this edge
   // (the caller copies block() into the buffer first).

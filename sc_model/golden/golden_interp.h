@@ -134,7 +134,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     out_.feed_saturated = false;
   }
   if (load) load_block();
-  if (!decoder_.quiet(in)) frame_edge(in, buffer_empty);
+  if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
 }
 
