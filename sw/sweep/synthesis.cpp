@@ -17,14 +17,10 @@ std::string read_sources(const std::vector<std::string>& files) {
   return s + "; ";
 }
 
-std::string generic_script(const SynthesisSetup& s, unsigned w) {
-  return read_sources(s.rtl_sources) + "chparam -set IncWidth " + std::to_string(w) +
-         " interp_top; synth -top interp_top; stat";
-}
-
-std::string ice40_script(const SynthesisSetup& s, unsigned w) {
-  return read_sources(s.rtl_sources) + "chparam -set IncWidth " + std::to_string(w) +
-         " interp_top; synth_ice40 -top interp_top; stat";
+// interp_top at width w through a yosys synthesis command ("synth" or "synth_ice40"), then stat.
+std::string stat_script(const SynthesisSetup& s, unsigned w, const std::string& synth) {
+  return read_sources(s.rtl_sources) + "chparam -set IncWidth " + std::to_string(w) + " interp_top; " + synth +
+         " -top interp_top; stat";
 }
 
 std::string harness_script(const SynthesisSetup& s, unsigned w, const std::string& json) {
@@ -63,7 +59,8 @@ std::string synthesis_key(const SynthesisSetup& s) {
   std::vector<std::string> files = s.rtl_sources;
   files.push_back(s.fpga_top);
   std::vector<std::string> extra = pnr_command(s, "");
-  for (const std::string& script : {generic_script(s, 0), ice40_script(s, 0), harness_script(s, 0, "")})
+  for (const std::string& script :
+       {stat_script(s, 0, "synth"), stat_script(s, 0, "synth_ice40"), harness_script(s, 0, "")})
     extra.push_back(script);
   for (const std::string& tool : {s.yosys, s.nextpnr}) {
     const std::string log = s.work_dir + "/" + std::filesystem::path(tool).filename().string() + ".version";
@@ -86,7 +83,7 @@ SynthResult synthesize(unsigned w, const SynthesisSetup& s, const std::string& k
   // Generic cells and flip-flops.
   {
     const std::string log = dir + "/yosys_synth.log";
-    const ProcessOutcome p = run_process({s.yosys, "-p", generic_script(s, w)}, log);
+    const ProcessOutcome p = run_process({s.yosys, "-p", stat_script(s, w, "synth")}, log);
     cacheable &= completed(p);
     const std::optional<YosysStat> stat = p.ok() ? parse_yosys_stat(read_text_file(log)) : std::nullopt;
     if (stat) {
@@ -100,7 +97,7 @@ SynthResult synthesize(unsigned w, const SynthesisSetup& s, const std::string& k
   // iCE40 LUTs of interp_top itself.
   {
     const std::string log = dir + "/yosys_synth_ice40.log";
-    const ProcessOutcome p = run_process({s.yosys, "-p", ice40_script(s, w)}, log);
+    const ProcessOutcome p = run_process({s.yosys, "-p", stat_script(s, w, "synth_ice40")}, log);
     cacheable &= completed(p);
     const std::optional<YosysStat> stat = p.ok() ? parse_yosys_stat(read_text_file(log)) : std::nullopt;
     r.ice40_luts = stat ? Measured::of(static_cast<double>(stat->count("SB_LUT4")))
