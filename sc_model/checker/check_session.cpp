@@ -56,6 +56,14 @@ InterpConfig interp_config(const tape::Format& format, double clock_hz) {
   return cfg;
 }
 
+void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, firststage::GridPoint start) {
+  s.format = firststage::tape_format(o);
+  s.tol_mm = o.tol_mm;
+  s.start_mm = firststage::Vec2{start.x * o.blu_mm, start.y * o.blu_mm};
+  s.cutter_radius_mm = o.cutter_radius_mm;
+  s.cutter_left = o.side_left;
+}
+
 IntPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup) {
   const double to_blu = 1.0 / blu_of(setup.format);
   firststage::Vec2 s;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine_run.h"
+#include "firststage.h"
 #include "geometry/contour.h"
 #include "golden_interp.h"
 #include "reference_contour.h"
@@ -58,6 +59,9 @@ struct CheckOutcome {
 };
 
 double blu_of(const tape::Format& format);
+// Sets what a tape the first stage made with options o tells the checker: its format, the
+// tolerance, the cutter and the tape's start (grid point, BLU), as `ncinterp tape` wrote them.
+void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, firststage::GridPoint start);
 InterpConfig interp_config(const tape::Format& format, double clock_hz);
 // The tape start's grid point: setup.start_mm, else the contour's start rounded to the grid.
 IntPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup);

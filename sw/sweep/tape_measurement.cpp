@@ -33,16 +33,13 @@ InputResult measure_input(const SweepInput& input, unsigned width, const Measure
     return r;
   }
 
-  const double blu = setup.first_stage.blu_mm;
   checker::CheckSetup cs;
-  cs.format = tape.format;
+  firststage::FirstStageOptions o = setup.first_stage;
+  o.width = width;
+  checker::match_first_stage(cs, o, tape.start);
   cs.clock_hz = setup.clock_hz;
   cs.reader_cps = setup.reader_cps;
   cs.engine = checker::EngineKind::kGolden;
-  cs.tol_mm = setup.first_stage.tol_mm;
-  cs.start_mm = firststage::Vec2{tape.start.x * blu, tape.start.y * blu};
-  cs.cutter_radius_mm = setup.first_stage.cutter_radius_mm;
-  cs.cutter_left = setup.first_stage.side_left;
   cs.keep_pulses = false;
   try {
     const checker::CheckOutcome out = checker::run_check(tape.frames, &input.contour, cs);

@@ -23,11 +23,7 @@ checker::CheckOutcome run_case(const Case& c) {
   firststage::GridPoint start;
   const std::vector<uint8_t> frames = make_tape(c, &start);
   checker::CheckSetup s = c.check;
-  s.format = firststage::tape_format(c.first_stage);
-  s.tol_mm = c.first_stage.tol_mm;
-  s.start_mm = firststage::Vec2{start.x * c.first_stage.blu_mm, start.y * c.first_stage.blu_mm};
-  s.cutter_radius_mm = c.first_stage.cutter_radius_mm;
-  s.cutter_left = c.first_stage.side_left;
+  checker::match_first_stage(s, c.first_stage, start);
   return checker::run_check(frames, &c.contour, s);
 }
 
