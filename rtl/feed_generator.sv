@@ -23,37 +23,37 @@ module feed_generator #(
   output logic                    saturated_o
 );
 
-  // phase + S < 2M when not saturated, and S itself needs StepWidth bits.
-  localparam int SumWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
-  localparam int PhaseWidth = SumWidth + 1;
+  // Only a block that is not saturated uses the phase, and then S < M: S, the phase
+  // (< M) and phase + S (< 2M) need ModulusWidth (+ 1) bits whatever StepWidth is.
+  localparam int PhaseWidth = ModulusWidth + 1;
+  localparam int CmpWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
   // logic depends on an input combinationally). Valid from the first clock after reset,
   // long before the first block can load.
   logic [ModulusWidth-1:0] modulus_q;
-  // step_q: S of the playing block. phase_q: accumulated feed, always < M when
-  // not saturated. saturated_q: S >= M, one iteration per clock.
+  // step_q: S of the playing block (its low bits: all of it when not saturated).
+  // phase_q: accumulated feed, always < M when not saturated. saturated_q: S >= M, one
+  // iteration per clock.
   logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
   logic                  saturated_q, saturated_d;
 
-  logic [PhaseWidth-1:0] step_load, sum, modulus;
+  logic [PhaseWidth-1:0] sum, modulus;
   logic                  reached;
 
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
     modulus     = PhaseWidth'(modulus_q);
-    step_load   = '0;
-    sum         = '0;
-    reached     = 1'b0;
+    sum         = 'x;  // used only while running unsaturated
+    reached     = 1'bx;
     strobe_o    = 1'b0;
     step_d      = step_q;
     phase_d     = phase_q;
     saturated_d = saturated_q;
     if (load_i) begin
-      step_load   = PhaseWidth'(step_i);
-      step_d      = step_load;
-      phase_d     = step_load;
-      saturated_d = step_load >= modulus;
+      step_d      = PhaseWidth'(step_i);
+      phase_d     = PhaseWidth'(step_i);
+      saturated_d = CmpWidth'(step_i) >= CmpWidth'(modulus_q);
     end else if (run_i) begin
       if (saturated_q) begin
         strobe_o = 1'b1;

@@ -13,7 +13,7 @@
 // combinationally): a frame taken at edge e (frame_valid_i & frame_ready_o) lands in the
 // input register and is processed at edge e+1, while the next frame may be taken. The LF
 // of a line block puts the decoder in HOLD, the LF of an arc block in ARC until arc_prepare
-// is done (max(N, 2W + 3) clocks), then HOLD or ERROR; the block buffer takes a held block
+// is done (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block
 // at the first edge where it is empty (blk_ready_i). frame_ready_o is low while the input
 // register is full and cannot be processed at the next edge (ARC, HOLD), and after an
 // error. tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a
@@ -79,6 +79,7 @@ module tape_decoder #(
   localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
   localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
   localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
+  localparam logic [WideWidth-1:0] CodeMask  = WideWidth'(127);
   localparam int KWidth = $clog2(IncWidth + 1);
   localparam int StepWidth = FeedWidth + IncWidth + 1;
   localparam logic [3:0] FracCount     = 4'(FracDigits);
@@ -193,7 +194,7 @@ module tape_decoder #(
   logic                   word_ok;      // the word ended by this frame was committed
   logic                   signed_word, fractional_word, word_complete;
   logic [3:0]             frac_limit;
-  logic [WideWidth-1:0]   limit, num_next;
+  logic [WideWidth-1:0]   limit, num_next;  // limit: the word's 2^w - 1 (127 for G and M)
   // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
   // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
   logic                   in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
@@ -221,12 +222,13 @@ module tape_decoder #(
   always_comb begin
     // Clocks without an update (most clocks: the reader is slow) evaluate nothing here:
     // the parser's registers keep their values (the always_ff's enable), so the next-state
-    // values are left at 0, which keeps the verilated model fast.
+    // values are don't-care ('x): the verilated model skips them (fast) and synthesis folds
+    // the 'x away (no gate per next-state bit).
     {state_d, frame_count_d, word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d,
      n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, signed_word, fractional_word,
-     frac_limit, limit, word_complete, num_next} = '0;
+     frac_limit, limit, word_complete, num_next} = 'x;
     if (update) begin
       state_d       = state_q;
       frame_count_d = frame_count_q;
@@ -272,7 +274,7 @@ module tape_decoder #(
         frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
         unique case (word_q)
           WordN:        limit = SeqLimit;
-          WordG, WordM: limit = CodeLimit;
+          WordG, WordM: limit = CodeMask;
           WordF:        limit = FeedLimit;
           default:      limit = IncLimit;
         endcase
@@ -301,7 +303,9 @@ module tape_decoder #(
                 end else if (num_state_q == NumFrac && frac_count_q == frac_limit) begin
                   fail = 1'b1;
                   fail_code = ErrMalformed;  // one fraction digit too many
-                end else if (num_next > limit) begin
+                end else if ((num_next & ~limit) != '0 ||
+                             ((word_q == WordG || word_q == WordM) && num_next[6:0] > CodeLimit[6:0])) begin
+                  // above the word's limit: a mask 2^w - 1 (one OR of the high bits), or 99
                   fail = 1'b1;
                   fail_code = ErrTooWide;
                 end else begin
