@@ -43,9 +43,6 @@ module arc_geometry #(
   output logic [3:0]          error_code_o
 );
 
-  localparam logic [3:0] ErrTooWide       = 4'd4;
-  localparam logic [3:0] ErrCrossQuadrant = 4'd10;
-  localparam logic [3:0] ErrZeroRadius    = 4'd12;
 
   // One axis: start magnitude s (sign: s_pos, the start is -I so it is positive when I is
   // negative), move d (d_pos). Result {plus, minus, end_mag, grow, too_wide}: the signs of
@@ -83,7 +80,7 @@ module arc_geometry #(
     x0_o = 'x;  y0_o = 'x;  x1_o = 'x;  y1_o = 'x;  grow_x_o = 1'bx;  grow_y_o = 1'bx;
     k_o = 'x;
     error_o = 1'bx;
-    error_code_o = ErrZeroRadius;
+    error_code_o = interp_pkg::ErrArcZeroRadius;
     if (enable_i) begin
       {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide} = axis(i_i, i_neg_i, dx_i, !dx_neg_i);
       {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide} = axis(j_i, j_neg_i, dy_i, !dy_neg_i);
@@ -102,11 +99,11 @@ module arc_geometry #(
 
       error_o = 1'b1;
       if (i_i == '0 && j_i == '0) begin
-        error_code_o = ErrZeroRadius;
+        error_code_o = interp_pkg::ErrArcZeroRadius;
       end else if (!in_quadrant) begin
-        error_code_o = ErrCrossQuadrant;
+        error_code_o = interp_pkg::ErrArcCrossesQuadrant;
       end else if (ax_too_wide || ay_too_wide) begin
-        error_code_o = ErrTooWide;
+        error_code_o = interp_pkg::ErrValueTooWide;
       end else begin
         error_o = 1'bx;
       end

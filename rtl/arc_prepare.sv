@@ -43,7 +43,6 @@ module arc_prepare #(
   output logic                 grow_y_o
 );
 
-  localparam logic [3:0] ErrOffCircle = 4'd11;
 
   // running_q: the arc's dry run and radius check are in progress (after the start edge).
   // step_q: F summed once per dry-run iteration.
@@ -90,7 +89,7 @@ module arc_prepare #(
   always_comb begin
     done_o     = 1'b0;
     err_o      = 1'b0;
-    err_code_o = ErrOffCircle;
+    err_code_o = interp_pkg::ErrArcEndpointOffCircle;
     if (start && geo_err) begin
       done_o     = 1'b1;
       err_o      = 1'b1;

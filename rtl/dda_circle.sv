@@ -170,6 +170,17 @@ module dda_circle #(
     end
   end
 
+  // The registers by axis name, for waves and readers (docs/waves.md); synthesis removes them.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [IncWidth-1:0] acc_x, acc_y, mag_x, mag_y, cnt_x, cnt_y;
+  /* verilator lint_on UNUSEDSIGNAL */
+  assign acc_x = a_is_y_q ? acc_b_q : acc_a_q;
+  assign acc_y = a_is_y_q ? acc_a_q : acc_b_q;
+  assign mag_x = a_is_y_q ? mag_b_q : mag_a_q;
+  assign mag_y = a_is_y_q ? mag_a_q : mag_b_q;
+  assign cnt_x = a_is_y_q ? cnt_b_q : cnt_a_q;
+  assign cnt_y = a_is_y_q ? cnt_a_q : cnt_b_q;
+
   assign step_x_o = step_x_q;
   assign step_y_o = step_y_q;
   assign dir_x_o  = dir_x_q;

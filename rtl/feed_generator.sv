@@ -9,6 +9,8 @@
 // Timing: at the load edge step_q = phase_q = S (the load clock counts as the first add)
 // and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
 // registers and acts in the same edge as the DDA iteration it triggers.
+// Golden twin: the section "Feed generator" of GoldenInterp::tick()
+// (sc_model/golden/golden_interp.h).
 module feed_generator #(
   parameter int StepWidth    = 49,
   parameter int ModulusWidth = 48
@@ -29,8 +31,11 @@ module feed_generator #(
   localparam int CmpWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
-  // logic depends on an input combinationally). Valid from the first clock after reset,
-  // long before the first block can load.
+  // logic depends on an input combinationally). Valid from the first clock on, long before
+  // the first block can load (the fourth clock after reset), so it has no reset: a board
+  // that ties feed_modulus_i to a constant (rtl/fpga/interp_ice40_top.sv) then has a
+  // register with a constant input and no reset value, which synthesis replaces by the
+  // constant, and the compares with M fold.
   logic [ModulusWidth-1:0] modulus_q;
   // step_q: S of the playing block (its low bits: all of it when not saturated).
   // phase_q: accumulated feed, always < M when not saturated. saturated_q: S >= M, one
@@ -38,14 +43,14 @@ module feed_generator #(
   logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
   logic                  saturated_q, saturated_d;
 
-  logic [PhaseWidth-1:0] sum, modulus;
-  logic                  reached;
+  logic [PhaseWidth-1:0] sum, modulus, over;
+  logic                  reached, borrow;
 
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
     modulus     = PhaseWidth'(modulus_q);
     sum         = 'x;  // used only while running unsaturated
-    reached     = 1'bx;
+    {borrow, over, reached} = 'x;
     strobe_o    = 1'b0;
     step_d      = step_q;
     phase_d     = phase_q;
@@ -58,22 +63,23 @@ module feed_generator #(
       if (saturated_q) begin
         strobe_o = 1'b1;
       end else begin
-        sum      = phase_q + step_q;
-        reached  = sum >= modulus;
+        // One subtraction gives both the compare (no borrow: sum >= M) and sum - M.
+        sum            = phase_q + step_q;
+        {borrow, over} = {1'b0, sum} - {1'b0, modulus};
+        reached        = !borrow;
         strobe_o = reached;
-        phase_d  = reached ? sum - modulus : sum;
+        phase_d  = reached ? over : sum;
       end
     end
   end
 
   always_ff @(posedge clk_i) begin
+    modulus_q <= modulus_i;
     if (!rst_ni) begin
-      modulus_q   <= '0;
       step_q      <= '0;
       phase_q     <= '0;
       saturated_q <= 1'b0;
     end else begin
-      modulus_q   <= modulus_i;
       step_q      <= step_d;
       phase_q     <= phase_d;
       saturated_q <= saturated_d;

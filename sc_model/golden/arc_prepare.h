@@ -13,7 +13,7 @@
 
 #include "arc_geometry.h"
 #include "arc_radius_check.h"
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "interp_ports.h"
 
 namespace ncinterp {
