@@ -96,6 +96,14 @@ module interp_top #(
   // Buffer -> player.
   logic                   next_valid;
   block_t                 dec_block, next_block;
+  // The buffer's width, from the struct: Yosys 0.23 takes $bits of a signal only, Icarus 11
+  // (bench/sim) evaluates $bits of a struct signal in a parameter wrongly (2): each gets the
+  // form it reads right.
+`ifdef __ICARUS__
+  localparam int BlockWidth = $bits(block_t);
+`else
+  localparam int BlockWidth = $bits(dec_block);
+`endif
   logic [SeqWidth-1:0]    next_n;
   logic [IncWidth-1:0]    next_dx, next_dy, next_i, next_j;
   logic                   next_dx_neg, next_dy_neg;
@@ -148,7 +156,7 @@ module interp_top #(
   assign dec_block.grow_x = dec_grow_x;
   assign dec_block.grow_y = dec_grow_y;
 
-  block_buffer #(.Width($bits(dec_block))) u_buffer (
+  block_buffer #(.Width(BlockWidth)) u_buffer (
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i(dec_block),
