@@ -36,4 +36,4 @@ done
 median=$(printf '%s\n' "${fmaxes[@]}" | sort -n | awk '{a[NR]=$0} END {print a[int((NR+1)/2)]}')
 echo "median Fmax: ${median% *} MHz (seed ${median#* }); critical path of that seed:"
 grep -A200 "Critical path report for clock" "$work/seed${median#* }/nextpnr.log" |
-  grep -E "Info: +[0-9.]+ +[0-9.]+ +(Net|Source)" | awk '{print "  " $NF}' | head -40
+  awk '$4 == "Source" {printf "  %6s ns  %s\n", $3, $5}' | head -40
