@@ -11,8 +11,8 @@
 // Board errors join the interpolator's (error LED and an "E" status line): 0x10 the FIFO
 // overflowed (flow control failed), 0x11 a UART framing error, 0x12 a step pulse was lost
 // (steps faster than the driver timing allows); their block is the current block_n and
-// their offset the number of bytes received.
-// The obs_* ports show interp_top's own outputs to the board simulation (board-sim) and
+// their offset the number of bytes received (modulo 2^16).
+// The obs_* ports show interp_top's own outputs, the FIFO level and the received bytes to the board simulation (board-sim) and
 // are left unconnected on a real board. Static configuration comes in on ports (the board
 // tops tie them to constants): bit_cycles_i clocks per UART bit, feed_modulus_i, and the
 // stretcher's clock counts.
@@ -21,15 +21,19 @@ module board_core #(
   parameter int FifoAddrWidth = 8,
   parameter int CtsStopLevel  = 240,
   parameter int XoffLevel     = 128,
-  parameter int XonLevel      = 32
+  parameter int XonLevel      = 32,
+  // UART bit clock counter (bit_cycles_i >= 4) and step timing counters: narrow enough
+  // to leave room for the interpolator on the part (12 MHz: >= 2930 baud, <= 21 us).
+  parameter int DivWidth      = 12,
+  parameter int StretchWidth  = 8
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
-  input  logic [15:0] bit_cycles_i,
+  input  logic [DivWidth-1:0] bit_cycles_i,
   input  logic [47:0] feed_modulus_i,
-  input  logic [15:0] setup_cycles_i,
-  input  logic [15:0] pulse_cycles_i,
-  input  logic [15:0] low_cycles_i,
+  input  logic [StretchWidth-1:0] setup_cycles_i,
+  input  logic [StretchWidth-1:0] pulse_cycles_i,
+  input  logic [StretchWidth-1:0] low_cycles_i,
   // UART to the host.
   input  logic        rx_i,
   output logic        tx_o,
@@ -59,6 +63,9 @@ module board_core #(
   output logic [19:0] obs_error_block_o,
   output logic [31:0] obs_error_offset_o,
   output logic        obs_feed_saturated_o,
+  output logic [FifoAddrWidth:0] obs_fifo_level_o,
+  output logic [7:0]  obs_rx_data_o,
+  output logic        obs_rx_valid_o,
   output logic [7:0]  board_error_code_o
 );
 
@@ -77,10 +84,10 @@ module board_core #(
   // tape_end_q: the EOT frame has been read. xoff_q: the host has been asked to stop.
   // cts_n_q: CTS# to the host. rx_count_q: bytes received. board_err_q: board error code.
   logic                   tape_end_q, xoff_q, cts_n_q;
-  logic [31:0]            rx_count_q;
+  logic [15:0]            rx_count_q;
   logic [7:0]             board_err_q;
 
-  uart_rx #(.DivWidth(16)) u_rx (
+  uart_rx #(.DivWidth(DivWidth)) u_rx (
     .clk_i, .rst_ni, .bit_cycles_i, .rx_i,
     .data_o(rx_data), .valid_o(rx_valid), .frame_error_o(rx_ferr)
   );
@@ -108,13 +115,13 @@ module board_core #(
     .error_offset_o(i_error_offset), .feed_saturated_o(i_sat)
   );
 
-  step_stretcher #(.CountWidth(16)) u_stretch_x (
+  step_stretcher #(.CountWidth(StretchWidth)) u_stretch_x (
     .clk_i, .rst_ni, .setup_cycles_i, .pulse_cycles_i, .low_cycles_i,
     .step_i(i_step_x), .dir_i(i_dir_x), .step_o(step_x_o), .dir_o(dir_x_o),
     .overrun_o(overrun_x)
   );
 
-  step_stretcher #(.CountWidth(16)) u_stretch_y (
+  step_stretcher #(.CountWidth(StretchWidth)) u_stretch_y (
     .clk_i, .rst_ni, .setup_cycles_i, .pulse_cycles_i, .low_cycles_i,
     .step_i(i_step_y), .dir_i(i_dir_y), .step_o(step_y_o), .dir_o(dir_y_o),
     .overrun_o(overrun_y)
@@ -127,9 +134,9 @@ module board_core #(
   assign any_error   = i_error || board_err_q != '0;
   assign line_code   = board_err_q != '0 ? board_err_q : {4'd0, i_error_code};
   assign line_block  = board_err_q != '0 ? i_block_n : i_error_block;
-  assign line_offset = board_err_q != '0 ? rx_count_q : i_error_offset;
+  assign line_offset = board_err_q != '0 ? {16'd0, rx_count_q} : i_error_offset;
 
-  status_line #(.DivWidth(16)) u_status (
+  status_line #(.DivWidth(DivWidth)) u_status (
     .clk_i, .rst_ni, .bit_cycles_i,
     .block_n_i(i_block_n), .busy_i(i_busy), .done_i(i_done), .error_i(any_error),
     .error_code_i(line_code), .error_block_i(line_block), .error_offset_i(line_offset),
@@ -178,6 +185,9 @@ module board_core #(
   assign obs_error_block_o    = i_error_block;
   assign obs_error_offset_o   = i_error_offset;
   assign obs_feed_saturated_o = i_sat;
+  assign obs_fifo_level_o     = level;
+  assign obs_rx_data_o        = rx_data;
+  assign obs_rx_valid_o       = rx_valid;
   assign board_error_code_o   = board_err_q;
 
 endmodule

@@ -57,15 +57,16 @@ module board_top #(
   /* verilator lint_off PINCONNECTEMPTY */
   board_core u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
-    .bit_cycles_i(BitCycles), .feed_modulus_i(FeedModulus),
-    .setup_cycles_i(SetupCycles), .pulse_cycles_i(PulseCycles), .low_cycles_i(LowCycles),
+    .bit_cycles_i(12'(BitCycles)), .feed_modulus_i(FeedModulus),
+    .setup_cycles_i(8'(SetupCycles)), .pulse_cycles_i(8'(PulseCycles)),
+    .low_cycles_i(8'(LowCycles)),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .led_busy_o(led_busy), .led_done_o(led_done), .led_error_o(led_error),
     .obs_frame_ready_o(), .obs_step_x_o(), .obs_dir_x_o(), .obs_step_y_o(), .obs_dir_y_o(),
     .obs_pos_x_o(), .obs_pos_y_o(), .obs_block_n_o(), .obs_busy_o(), .obs_done_o(),
     .obs_error_o(), .obs_error_code_o(), .obs_error_block_o(), .obs_error_offset_o(),
-    .obs_feed_saturated_o(), .board_error_code_o()
+    .obs_feed_saturated_o(), .obs_fifo_level_o(), .obs_rx_data_o(), .obs_rx_valid_o(), .board_error_code_o()
   );
   /* verilator lint_on PINCONNECTEMPTY */
 
