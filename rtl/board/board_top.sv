@@ -11,14 +11,14 @@
 // low >= 1.9 us, DIR setup and hold >= 650 ns; TB6600 (TB67S109-based modules) pulse >= 2.5 us,
 // DIR >= 5 us ahead of the pulse. The defaults suit the DRV8825 (2 us pulse, 1 us setup).
 module board_top #(
-  parameter longint ClockHz    = 12_000_000,
-  parameter longint Baud       = 115_200,
-  parameter longint PulseNs    = 2_000,
-  parameter longint LowNs      = 2_000,
-  parameter longint DirSetupNs = 1_000,
-  parameter longint DirHoldNs  = 1_000,
+  parameter int     ClockHz    = 12_000_000,
+  parameter int     Baud       = 115_200,
+  parameter int     PulseNs    = 2_000,
+  parameter int     LowNs      = 2_000,
+  parameter int     DirSetupNs = 1_000,
+  parameter int     DirHoldNs  = 1_000,
   // The iCEBreaker's LEDs light on a low pin, the iCEstick's on a high one.
-  parameter bit     LedActiveLow = 1'b0
+  parameter int     LedActiveLow = 0
 ) (
   input  logic clk_i,
   input  logic uart_rx_i,
@@ -43,16 +43,17 @@ module board_top #(
                                         ns_to_cycles(DirHoldNs, ClockHz) - PulseCycles : 16'd1;
   localparam logic [15:0] LowCycles   = ns_to_cycles(LowNs, ClockHz) > HoldLow ?
                                         ns_to_cycles(LowNs, ClockHz) : HoldLow;
-  localparam logic [47:0] FeedModulus = 48'(60 * ClockHz * 1000);
+  localparam logic [47:0] FeedModulus = 48'(longint'(ClockHz) * 60_000);
 
   // por_q: counts clocks after configuration; the core leaves reset when it saturates.
   logic [3:0] por_q = '0;
   always_ff @(posedge clk_i) if (por_q != 4'hf) por_q <= por_q + 1'b1;
 
   logic led_busy, led_done, led_error;
-  assign led_busy_o  = led_busy ^ LedActiveLow;
-  assign led_done_o  = led_done ^ LedActiveLow;
-  assign led_error_o = led_error ^ LedActiveLow;
+  localparam logic LedLow = LedActiveLow != 0;
+  assign led_busy_o  = led_busy ^ LedLow;
+  assign led_done_o  = led_done ^ LedLow;
+  assign led_error_o = led_error ^ LedLow;
 
   /* verilator lint_off PINCONNECTEMPTY */
   board_core u_core (
