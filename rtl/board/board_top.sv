@@ -43,7 +43,7 @@ module board_top #(
                                         ns_to_cycles(DirHoldNs, ClockHz) - PulseCycles : 16'd1;
   localparam logic [15:0] LowCycles   = ns_to_cycles(LowNs, ClockHz) > HoldLow ?
                                         ns_to_cycles(LowNs, ClockHz) : HoldLow;
-  localparam logic [47:0] FeedModulus = 48'(longint'(ClockHz) * 60_000);
+  localparam logic [47:0] FeedModulus = 48'(64'(ClockHz) * 64'd60_000);
 
   // por_q: counts clocks after configuration; the core leaves reset when it saturates.
   logic [3:0] por_q = '0;

@@ -4,7 +4,9 @@
 // subprocess.h, synth_logs.h: the same runner and log parsers as the bit-width sweep), their
 // logs kept in a work directory. The result says plainly why there is no bitstream: the
 // design does not fit (cells needed vs available), misses the board clock, or a tool
-// failed (its first error line). The .bin is written atomically.
+// failed (its first error line). At high utilisation the Fmax depends on the placement
+// seed by a few per cent: seeds are tried in turn (docs/board.md). The .bin is written
+// atomically.
 #pragma once
 #include <optional>
 #include <string>
@@ -33,8 +35,9 @@ struct BitstreamResult {
   std::string work_dir;
 };
 
-// Builds `out` for the board; the tools' logs go to work_dir (created).
+// Builds `out` for the board; the tools' logs go to work_dir (created). Placement seeds
+// 1..seeds are tried in turn until one meets the board clock.
 BitstreamResult build_bitstream(const BoardTarget& board, const std::string& out,
-                                const std::string& work_dir);
+                                const std::string& work_dir, unsigned seeds = 5);
 
 }  // namespace ncinterp::board

@@ -189,8 +189,8 @@ class Runner {
           line += static_cast<char>(b);
         }
       }
-      // What the board received: its receiver's bytes are the sender's bytes in order.
-      if (m_rx_valid(m)) record_frame(r, m);
+      // The frames the board received (its receiver's bytes; the EOT frame is not one).
+      if (m.obs_rx_valid_o && m.obs_rx_data_o != kEndOfTapeFrame) r.frames.push_back(m.obs_rx_data_o);
       r.max_fifo_level = std::max<unsigned>(r.max_fifo_level, m.obs_fifo_level_o);
       r.board_error = m.board_error_code_o;
 
@@ -242,11 +242,6 @@ class Runner {
   uint64_t cycles() const { return final_cycle_; }
 
  private:
-  static bool m_rx_valid(const Model& m) { return m.obs_rx_valid_o; }
-  void record_frame(BoardSimResult& r, const Model& m) {
-    if (m.obs_rx_data_o != kEndOfTapeFrame) r.frames.push_back(m.obs_rx_data_o);
-  }
-
   void trace(Model& m) { m.trace(vcd_, 99); }
 
   void edge() {

@@ -15,13 +15,14 @@ namespace {
 
 struct BitstreamArgs {
   std::string board, out, work_dir;
+  unsigned seeds = 5;
 };
 
 int run(const BitstreamArgs& a) {
   const board::BoardTarget target = board::board_target(a.board);
   const std::string work =
       a.work_dir.empty() ? std::filesystem::path(a.out).string() + ".build" : a.work_dir;
-  const board::BitstreamResult r = board::build_bitstream(target, a.out, work);
+  const board::BitstreamResult r = board::build_bitstream(target, a.out, work, a.seeds);
   if (!r.ok) {
     std::cerr << "ncinterp bitstream: " << r.message << "\n";
     return 1;
@@ -37,6 +38,9 @@ void setup(CLI::App& app) {
       ->check(CLI::IsMember({"icestick", "icebreaker"}))
       ->required();
   cmd->add_option("-o,--output", args->out, "Bitstream file (.bin, for iceprog)")->required();
+  cmd->add_option("--seeds", args->seeds, "Placement seeds to try until one meets the board clock")
+      ->check(CLI::Range(1u, 100u))
+      ->capture_default_str();
   cmd->add_option("--work-dir", args->work_dir, "Netlists and tool logs (default: OUTPUT.build)");
   cmd->callback([args] {
     int code;

@@ -14,8 +14,9 @@ mkdir -p "$out"
   >"$out/$board.stdout" 2>"$out/$board.stderr"
 code=$?
 cat "$out/$board.stdout" "$out/$board.stderr"
-line=$(grep -E 'ICESTORM_LC:\s+[0-9]+/\s*[0-9]+' "$out/$board.build/nextpnr.log" | tail -1)
-[[ -n $line ]] || { echo "FAIL: no utilisation line in nextpnr.log"; exit 1; }
+# Every placement seed's log has the same utilisation line: the first one's.
+line=$(grep -E 'ICESTORM_LC:\s+[0-9]+/\s*[0-9]+' "$out/$board.build/nextpnr_seed1.log" | tail -1)
+[[ -n $line ]] || { echo "FAIL: no utilisation line in nextpnr_seed1.log"; exit 1; }
 used=$(sed -E 's/.*ICESTORM_LC:\s+([0-9]+)\/\s*([0-9]+).*/\1/' <<<"$line")
 avail=$(sed -E 's/.*ICESTORM_LC:\s+([0-9]+)\/\s*([0-9]+).*/\2/' <<<"$line")
 echo "nextpnr: $used of $avail logic cells"
@@ -30,6 +31,6 @@ else
   (( code == 0 )) || { echo "FAIL: exit $code for a design that fits"; exit 1; }
   [[ -s $out/$board.bin ]] || { echo "FAIL: no bitstream"; exit 1; }
   grep -q "$used of $avail logic cells" "$out/$board.stdout" || { echo "FAIL: no cell count"; exit 1; }
-  grep -q "Fmax .* MHz (board clock 12 MHz)" "$out/$board.stdout" || { echo "FAIL: no Fmax"; exit 1; }
+  grep -q "Fmax .* MHz (board clock 12 MHz" "$out/$board.stdout" || { echo "FAIL: no Fmax"; exit 1; }
   echo "PASS: $board fits ($used of $avail) and has its bitstream"
 fi
