@@ -50,7 +50,7 @@ speed_t speed_for(unsigned baud) {
 // The port, raw 8N1 with the flow control asked for; closed on destruction.
 class Port {
  public:
-  Port(const std::string& path, unsigned baud, bool rtscts) {
+  Port(const std::string& path, speed_t speed, bool rtscts) {
     fd_ = open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
     if (fd_ < 0) throw std::runtime_error(path + ": " + std::strerror(errno));
     termios t{};
@@ -59,8 +59,8 @@ class Port {
       throw std::runtime_error(path + ": not a serial port (" + std::string(std::strerror(errno)) + ")");
     }
     cfmakeraw(&t);
-    cfsetispeed(&t, speed_for(baud));
-    cfsetospeed(&t, speed_for(baud));
+    cfsetispeed(&t, speed);
+    cfsetospeed(&t, speed);
     t.c_cflag |= CLOCAL | CREAD;
     t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | PARENB);
     if (rtscts) t.c_cflag |= CRTSCTS;
@@ -81,11 +81,12 @@ class Port {
 };
 
 int run(const SendArgs& a) {
+  const speed_t speed = speed_for(a.baud);
   std::vector<uint8_t> frames = tape::load_frames(a.tape);
   const size_t tape_frames = frames.size();
   frames.push_back(board::kEndOfTapeFrame);
   const unsigned frac_digits = system::play_config(12e6).frac_digits;
-  Port port(a.port, a.baud, a.flow == "rtscts");
+  Port port(a.port, speed, a.flow == "rtscts");
   const bool tty = isatty(STDERR_FILENO);
 
   size_t sent = 0;

@@ -166,4 +166,16 @@ TEST_F(BoardCli, FlippedParityFailsNamingTheBlockWithNoPulseFromIt) {
   expect_same_motion(p);
 }
 
+TEST_F(BoardCli, SendAndBoardSimRefuseUnusableOptionsClearly) {
+  { std::ofstream(path("plain.txt")) << "not a port"; }
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + path("plain.txt")), 1);
+  EXPECT_NE(stderr_.find("not a serial port"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + path("tty") + " --baud 12345"), 1);
+  EXPECT_NE(stderr_.find("not a standard termios rate"), std::string::npos) << stderr_;
+  // 1 MHz / 921600 baud is about one clock per bit: the board's receiver needs 4.
+  EXPECT_EQ(run("board-sim --pty " + path("tty") + " --clock-hz 1e6 --baud 921600"), 1);
+  EXPECT_NE(stderr_.find("the board needs 4 to 4095"), std::string::npos) << stderr_;
+  EXPECT_FALSE(fs::exists(path("tty")));
+}
+
 }  // namespace
