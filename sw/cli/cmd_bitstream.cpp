@@ -1,6 +1,6 @@
 // `ncinterp bitstream --board icestick|icebreaker -o X.bin [--work-dir D]`: the board's
 // bitstream from the repository's RTL (rtl/board/board_top.sv and the interpolator) and
-// .pcf (sc_model/board/bitstream.h). Prints the logic cells used and the Fmax against the
+// .pcf (sw/tools/bitstream/bitstream.h). Prints the logic cells used and the Fmax against the
 // board clock; exit 1 with one clear line when the design does not fit, misses the board
 // clock or a tool fails (the tools' logs stay in the work directory).
 #include <cstdio>
@@ -19,10 +19,10 @@ struct BitstreamArgs {
 };
 
 int run(const BitstreamArgs& a) {
-  const board::BoardTarget target = board::board_target(a.board);
+  const bitstream::BoardTarget target = bitstream::board_target(a.board);
   const std::string work =
       a.work_dir.empty() ? std::filesystem::path(a.out).string() + ".build" : a.work_dir;
-  const board::BitstreamResult r = board::build_bitstream(target, a.out, work, a.seeds);
+  const bitstream::BitstreamResult r = bitstream::build_bitstream(target, a.out, work, a.seeds);
   if (!r.ok) {
     std::cerr << "ncinterp bitstream: " << r.message << "\n";
     return 1;
