@@ -31,11 +31,16 @@ fi
 
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-if [[ ! -f $build/build.ninja ]]; then
-  CCACHE_BASEDIR=$root cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_COMPILER=clang++ -DNCINTERP_FUZZ=ON "${launcher[@]}" >/dev/null
-fi
-CCACHE_BASEDIR=$root nice cmake --build "$build" --target "fuzz_$target" --parallel 2
+mkdir -p "$build"
+# One build at a time: several fuzzers may be started together.
+(
+  flock 9
+  if [[ ! -f $build/build.ninja ]]; then
+    CCACHE_BASEDIR=$root cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_COMPILER=clang++ -DNCINTERP_FUZZ=ON "${launcher[@]}" >/dev/null
+  fi
+  CCACHE_BASEDIR=$root nice cmake --build "$build" --target "fuzz_$target" --parallel 2
+) 9>"$build/.build.lock"
 
 corpus=$build/corpus/$target findings=$build/findings/$target
 mkdir -p "$corpus" "$findings"

@@ -6,9 +6,12 @@
 // Idea: the two engines and the reader are three implementations of one contract (docs/
 // tape-format.md, docs/interpolator.md); random tapes reach corners no hand-written test
 // names. The work per input is bounded: a fast reader (one clock per frame), a small feed
-// modulus (blocks take at most ~10^5 clocks, saturated ones 2^k), at most kMaxCycles
-// clocks; a run cut there is still compared clock by clock, only the outcome is not.
+// modulus (a block takes at most 2 10^4 clocks, a saturated one 2^k for 2^k iterations),
+// at most kMaxCycles clocks; a run cut there is still compared clock by clock, only the
+// outcome is not. NCINTERP_FUZZ_STATS=1 prints how many inputs ended how (at exit).
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "fuzz_check.h"
@@ -20,10 +23,21 @@ namespace {
 using ncinterp::cosim::Result;
 
 constexpr size_t kMaxFrames = 4096;
-constexpr uint64_t kMaxCycles = 300'000;
-// 60 f_clk 10^3 for f_clk = 5/3 Hz: F = 1 (0.001/min) gives the longest non-saturated block,
-// ceil(M / F) = 10^5 clocks; any F >= M / 2^k saturates (2^k clocks).
-constexpr uint64_t kFeedModulus = 100'000;
+constexpr uint64_t kMaxCycles = 100'000;
+// 60 f_clk 10^3 for f_clk = 1/3 Hz: F = 1 (0.001/min) gives the longest non-saturated block,
+// ceil(M / F) = 2 10^4 clocks; any F >= M / 2^k saturates (2^k clocks).
+constexpr uint64_t kFeedModulus = 20'000;
+
+// Inputs per way a run ended (done, tape error, cycle limit), printed at exit on request.
+struct EndCounts {
+  uint64_t n[3] = {0, 0, 0};
+  ~EndCounts() {
+    if (std::getenv("NCINTERP_FUZZ_STATS"))
+      std::fprintf(stderr, "tape_lockstep: %llu done, %llu tape error, %llu cycle limit\n",
+                   static_cast<unsigned long long>(n[0]), static_cast<unsigned long long>(n[1]),
+                   static_cast<unsigned long long>(n[2]));
+  }
+} end_counts;
 
 std::string outcome_of(const Result& r) {
   if (r.end == Result::End::kDone) return "done";
@@ -73,6 +87,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const Result r = ncinterp::cosim::run_lockstep(frames, options);
   if (r.end == Result::End::kMismatch)
     ncinterp::fuzz::fail("RTL and golden model differ: " + ncinterp::cosim::describe(*r.mismatch));
+  ++end_counts.n[r.end == Result::End::kDone ? 0 : r.end == Result::End::kTapeError ? 1 : 2];
   if (r.end != Result::End::kCycleLimit) compare_with_reader(frames, r);
   return 0;
 }
