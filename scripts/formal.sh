@@ -131,7 +131,7 @@ run_proof() {
   local name=$1 rtl_dir=$2 out=$3 mode=${4:-${p_mode[$1]}} depth=${5:-${p_depth[$1]}}
   rm -rf "$out"; mkdir -p "$out"
   if ! build_smt2 "$name" "$rtl_dir" "$out" "${6:-}"; then echo "ERROR yosys"; return; fi
-  local smt=(yosys-smtbmc -s "$solver" --presat -t "$depth")
+  local smt=(yosys-smtbmc -s "$solver" --unroll --presat -t "$depth")
   case "$mode" in
     bmc|prove)
       if ! "${smt[@]}" --dump-vcd "$out/trace.vcd" "$out/model.smt2" >"$out/bmc.log" 2>&1; then
@@ -167,7 +167,7 @@ rows=()
 passed=0
 failed=0
 record() {  # property method depth result seconds
-  rows+=("$(printf '%-34s %-12s %6s  %-40s %8s' "$1" "$2" "$3" "$4" "$5")")
+  rows+=("$(printf '%-48s %-12s %6s  %-36s %8s' "$1" "$2" "$3" "$4" "$5")")
   if [[ "$4" == PASS* || "$4" == caught* ]]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
 }
 
@@ -239,8 +239,8 @@ else
   if ((mutants)); then for m in "${mutant_names[@]}"; do check_mutant "$m"; done; fi
 fi
 
-printf '%-34s %-12s %6s  %-40s %8s\n' property method depth result seconds
-printf '%s\n' "$(printf '%.0s-' {1..106})"
+printf '%-48s %-12s %6s  %-36s %8s\n' property method depth result seconds
+printf '%s\n' "$(printf '%.0s-' {1..114})"
 printf '%s\n' "${rows[@]}"
 echo "$passed passed, $failed failed"
 ((failed == 0))
