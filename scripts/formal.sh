@@ -229,7 +229,7 @@ elif ((jobs > 1)); then
   {
     for n in "${proof_names[@]}"; do echo "--only $n"; done
     if ((mutants)); then for m in "${mutant_names[@]}"; do echo "--mutant $m"; done; fi
-  } | nice parallel -k -j "$jobs" "$0 ${args[*]} {} | sed -n '3p'" >"$work/rows.txt" || true
+  } | nice parallel -k -j "$jobs" --colsep ' ' "$0 ${args[*]} {1} {2} | sed -n '3p'" >"$work/rows.txt" || true
   while IFS= read -r row; do
     rows+=("$row")
     if [[ "$row" == *" PASS "* || "$row" == *" caught: "* ]]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi

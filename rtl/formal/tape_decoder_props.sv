@@ -6,13 +6,15 @@
 //   every field, until the buffer takes it (blk_ready_i);
 // - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
 //   more than K consecutive clocks unless the decoder is in error or holds a block. K =
-//   2^(W+1) + 2W + 6 covers an arc's preparation (max(N, 2W + 3) clocks, N < 2^(W+1)) and
-//   the handoff. So a byte stream ends in a played program, a held block, waiting for
+//   max(2^(W+1), 2W + 3) + 2 covers an arc's preparation (max(N, 2W + 3) clocks,
+//   N < 2^(W+1)) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
 //   frames, or an error, and nothing else stalls the reader.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
-// preparation's internals (which the area redesign changes); the depth covers reading an
-// arc block at W = 2 and K clocks beyond (the cover shows an arc prepared and taken).
+// preparation's internals (which the area redesign changes). The depth (24 clocks) covers
+// reading a short program and K clocks beyond (e.g. the end of a program); an arc block
+// needs about 15 clocks to be read, so its preparation is covered only partly (the cover
+// shows it starts); --deep goes to 40.
 module tape_decoder_props #(
   parameter int W  = 2,
   parameter int FW = 2,
@@ -29,7 +31,7 @@ module tape_decoder_props #(
 
   localparam int KWidth = $clog2(W + 1);
   localparam int SW = FW + W + 1;
-  localparam int K = (1 << (W + 1)) + 2 * W + 6;
+  localparam int K = ((1 << (W + 1)) > 2 * W + 3 ? (1 << (W + 1)) : 2 * W + 3) + 2;
   localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
 
   logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y;
@@ -87,9 +89,13 @@ module tape_decoder_props #(
     end
   end
 
-  // Reachability: an arc block is prepared and taken by the buffer.
+  // Reachability: a block is taken by the buffer; the reader is held off while an arc is
+  // prepared (frame_ready low, no error, no block held: only in ARC).
   always_comb begin
-    if (!f_init) cp_arc_taken: cover (blk_valid && blk_ready_i && motion != 2'd1);
+    if (!f_init) begin
+      cp_block_taken: cover (blk_valid && blk_ready_i);
+      cp_arc_holds_reader: cover (f_low_q == 6'd3);
+    end
   end
 
 endmodule
