@@ -1,0 +1,93 @@
+// Tape format v1 (docs/tape-format.md): blocks <-> ISO 6983 word-address text <-> 8-bit
+// frames with ISO 840 even parity.
+// Idea: the first stage builds a Program of integer blocks (BLU, feed units) and writes it;
+// tests, the checker and reports read a tape back into the same Program. The software
+// reader enforces the same rules as the hardware decoder, so a tape it accepts plays.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tape_errors.h"
+
+namespace ncinterp::tape {
+
+// G01, G02, G03 (tape_motions.def: the code is the G number).
+enum class Motion : uint8_t {
+#define TAPE_MOTION(name, code, word) k##name = code,
+#include "tape_motions.def"
+#undef TAPE_MOTION
+};
+
+struct Block {
+  uint32_t n = 0;               // sequence number
+  Motion motion = Motion::kLine;
+  int64_t dx = 0, dy = 0;       // incremental move, BLU
+  int64_t i = 0, j = 0;         // arc centre relative to the block's start, BLU
+  uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min
+};
+
+struct Format {
+  unsigned frac_digits = 3;       // BLU = 10^-frac_digits mm
+  unsigned feed_frac_digits = 3;  // fraction digits of F
+  unsigned inc_width = 16;        // |dx|,|dy|,|i|,|j| <= 2^inc_width - 1
+  // Added after v1's first draft; the defaults are the interpolator's (InterpConfig).
+  unsigned feed_width = 32;       // F <= 2^feed_width - 1
+  unsigned seq_width = 20;        // N <= 2^seq_width - 1
+};
+
+struct Program {
+  std::vector<Block> blocks;  // motion blocks in tape order
+  bool end_m30 = false;       // end block is M30 (else M02)
+};
+
+// Where and why a tape is bad: the block's N (or the previous N when the bad block has
+// none yet) and the 0-based offset of the offending frame.
+struct TapeErrorInfo {
+  uint32_t block = 0;
+  uint64_t offset = 0;
+  std::string message;
+  unsigned code = 0;  // the interpolator's error code (ncinterp::TapeError, tape_errors.h)
+};
+
+class TapeFormatError : public std::runtime_error {
+ public:
+  explicit TapeFormatError(TapeErrorInfo info);
+  const TapeErrorInfo& info() const { return info_; }
+
+ private:
+  TapeErrorInfo info_;
+};
+
+// "block N<n>, offset K: message": the part of the one-line error after "FILE: ".
+std::string describe(const TapeErrorInfo& info);
+
+// Program -> tape text ("%\n" setup block, motion blocks, M02, "%\n").
+std::string format_program(const Program& program, const Format& format);
+// Adds ISO 840 even parity in bit 7 of every 7-bit character.
+std::vector<uint8_t> add_parity(std::string_view text);
+// Frames -> Program; throws TapeFormatError on any rule the decoder enforces.
+Program parse_frames(const std::vector<uint8_t>& frames, const Format& format);
+// Frames -> every block before the first error, and that error (if any). What a machine
+// plays of a bad tape: the system model's monitors use it to know the programmed chords.
+struct ParseResult {
+  Program program;
+  std::optional<TapeErrorInfo> error;
+};
+ParseResult parse_frames_partial(const std::vector<uint8_t>& frames, const Format& format);
+// True when the frame has an even number of ones (ISO 840).
+bool has_even_parity(uint8_t frame);
+// A .tape file holds the frames as punched; any other is plain text.
+bool is_frame_file(const std::string& path);
+// Reads a tape file: .tape files are frames as they are; any other file (.nc, .ngc, .txt)
+// is plain text and gets parity added. Throws std::runtime_error naming the file.
+std::vector<uint8_t> load_frames(const std::string& path);
+// Writes the program atomically (temporary file + rename): no half-written tape on failure.
+// A .tape path gets frames with parity; any other extension gets the plain text. Throws
+// std::invalid_argument (a value the format cannot hold) before touching the file system.
+void write_tape_file(const std::string& path, const Program& program, const Format& format);
+
+}  // namespace ncinterp::tape
