@@ -114,9 +114,7 @@ build_smt2() {
   fi
   script+="hierarchy -check -top $harness"$'\n'"proc"$'\n'"flatten"$'\n'
   # Taps: "// formal-tap: wire = hierarchical.name"
-  # (the taps feed the invariants, which FORMAL_PROPERTIES_ONLY leaves out)
   local tap
-  [[ "$defines" == *FORMAL_PROPERTIES_ONLY* ]] ||
   while read -r tap; do
     script+="connect -set ${tap%%=*} ${tap#*=}"$'\n'
   done < <(sed -n 's#^ *// formal-tap: *\([^ =]*\) *= *\([^ ]*\) *$#\1=\2#p' "$formal_dir/$harness.sv")
@@ -234,7 +232,7 @@ elif ((jobs > 1)); then
   {
     for n in "${proof_names[@]}"; do echo "--only $n"; done
     if ((mutants)); then for m in "${mutant_names[@]}"; do echo "--mutant $m"; done; fi
-  } | nice parallel -k -j "$jobs" --colsep ' ' "$0 ${args[*]} {1} {2} | sed -n '3p'" >"$work/rows.txt" || true
+  } | parallel -k -j "$jobs" --colsep ' ' "$0 ${args[*]} {1} {2} | sed -n '3p'" >"$work/rows.txt" || true
   while IFS= read -r row; do
     rows+=("$row")
     if [[ "$row" == *" PASS "* || "$row" == *" caught: "* ]]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi

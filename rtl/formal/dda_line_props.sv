@@ -97,7 +97,7 @@ module dda_line_props #(
     end
   end
 
-`ifndef FORMAL_PROPERTIES_ONLY
+  // Internal registers for the invariants (driven by scripts/formal.sh).
   // formal-tap: tap_kpow = u_dut.kpow_q
   // formal-tap: tap_rem = u_dut.rem_q
   // formal-tap: tap_acc_x = u_dut.u_axis_x.acc_q
@@ -106,6 +106,8 @@ module dda_line_props #(
   // formal-tap: tap_inc_y = u_dut.u_axis_y.inc_q
   logic [W:0]   tap_kpow, tap_rem;
   logic [W-1:0] tap_acc_x, tap_acc_y, tap_inc_x, tap_inc_y;
+
+`ifndef FORMAL_PROPERTIES_ONLY
   logic [W:0]   f_kpow, f_done;
   assign f_kpow = (W + 1)'(1) << f_k_q;
   assign f_done = tap_kpow - tap_rem;  // iterations done

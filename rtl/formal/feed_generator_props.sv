@@ -112,7 +112,7 @@ module feed_generator_props #(
     end
   end
 
-`ifndef FORMAL_PROPERTIES_ONLY
+  // Internal registers for the invariants (driven by scripts/formal.sh).
   // formal-tap: tap_phase = u_dut.phase_q
   // formal-tap: tap_step = u_dut.step_q
   // formal-tap: tap_sat = u_dut.saturated_q
@@ -120,6 +120,8 @@ module feed_generator_props #(
   logic [StepWidth:0] tap_phase, tap_step;  // PhaseWidth = max(StepWidth, MW) + 1
   logic               tap_sat;
   logic [MW-1:0]      tap_modulus;
+
+`ifndef FORMAL_PROPERTIES_ONLY
   logic [PW-1:0]      f_done;
   assign f_done = PW'(f_j_q);
 
