@@ -132,9 +132,10 @@ run_proof() {
   rm -rf "$out"; mkdir -p "$out"
   if ! build_smt2 "$name" "$rtl_dir" "$out" "${6:-}"; then echo "ERROR yosys"; return; fi
   local smt=(yosys-smtbmc -s "$solver" --unroll -t "$depth")
-  # BMC checks the assertions of 4 steps per solver call (fewer calls on the deep, slow
-  # harnesses); the covers show the assumptions are not vacuous.
-  local bmc=(yosys-smtbmc -s "$solver" --unroll -t "0:4:$depth")
+  # BMC checks every step on its own: with a step size (-t 0:4:N) yosys-smtbmc 0.23 writes
+  # a counterexample VCD that stops before the failing step. No --presat: the covers show
+  # the assumptions are not vacuous.
+  local bmc=(yosys-smtbmc -s "$solver" --unroll -t "$depth")
   case "$mode" in
     bmc|prove)
       if ! "${bmc[@]}" --dump-vcd "$out/trace.vcd" "$out/model.smt2" >"$out/bmc.log" 2>&1; then
