@@ -117,7 +117,7 @@ module feed_generator_props #(
   // formal-tap: tap_step = u_dut.step_q
   // formal-tap: tap_sat = u_dut.saturated_q
   // formal-tap: tap_modulus = u_dut.modulus_q
-  logic [StepWidth:0] tap_phase, tap_step;  // PhaseWidth = max(StepWidth, MW) + 1
+  logic [MW:0]        tap_phase, tap_step;  // PhaseWidth = MW + 1 (S < M when it is used)
   logic               tap_sat;
   logic [MW-1:0]      tap_modulus;
 
@@ -130,7 +130,7 @@ module feed_generator_props #(
       if (f_age_q >= 2'd2) ai_modulus: assert (tap_modulus == f_m_q);
       if (!f_blk_q) ai_idle: assert (!run);
       if (f_blk_q) begin
-        ai_block: assert (tap_step == (StepWidth + 1)'(f_s_q) && tap_sat == f_sat
+        ai_block: assert (tap_step == (MW + 1)'(f_s_q) && tap_sat == f_sat
                           && f_s_q == SW'(f_f_q) * SW'(f_n_q) && f_f_q != '0
                           && (NW + 1)'(f_left_q) + (NW + 1)'(f_j_q) == (NW + 1)'(f_n_q)
                           && f_m_q != '0 && f_age_q >= 2'd2);
