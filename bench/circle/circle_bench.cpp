@@ -9,7 +9,7 @@
 //               1/F, saturation, the decoder's arc preparation against the block time
 // Idea: all numbers come from the same golden classes the interpolator uses
 // (sc_model/golden/circle_dda.h, arc_geometry.h, golden_interp.h), except the scheme
-// study, which needs a free-running circle (bench/circle/scheme_study.h).
+// study, which needs a free-running circle (sw/tools/circle_study/scheme_study.h).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "arc_geometry.h"
-#include "circle_test_support.h"
+#include "arc_cases.h"
 #include "firststage.h"
 #include "frame_source.h"
 #include "golden_interp.h"
@@ -29,7 +29,11 @@
 namespace ncinterp::bench {
 namespace {
 
-using test::QuadrantArc;
+using circle_study::QuadrantArc;
+using circle_study::Scheme;
+using circle_study::TurnStats;
+using circle_study::run_free_turns;
+using circle_study::scheme_name;
 
 void scheme_section() {
   std::printf("\n### Update scheme, free-running circle (no counters), counter-clockwise\n\n");
@@ -75,8 +79,8 @@ void quadrants_section() {
     for (int64_t r : radii)
       for (int q = 0; q < 4; ++q)
         for (bool ccw : {false, true}) {
-          const QuadrantArc a = test::full_quadrant(r, q, ccw);
-          const test::ArcRunStats s = test::run_arc(a, 16, 1u << 20);
+          const QuadrantArc a = circle_study::full_quadrant(r, q, ccw);
+          const circle_study::ArcRunStats s = circle_study::run_arc(a, 16, 1u << 20);
           worst.offer(s.max_radial_error, a);
           max_n = std::max(max_n, double(s.iterations) / double(uint64_t{1} << s.k));
         }
@@ -95,7 +99,7 @@ void random_section(int count, uint64_t seed) {
   double max_n = 0, max_off = 0;
   uint64_t off_arcs = 0;
   for (int t = 0; t < count; ++t) {
-    QuadrantArc a = test::random_arc(rng, 65535);
+    QuadrantArc a = circle_study::random_arc(rng, 65535);
     // Every other arc: move the end by up to 1 BLU per coordinate while it stays good, to
     // reach ends a whole BLU off the circle.
     const bool perturbed = t % 2 == 1;
@@ -105,7 +109,7 @@ void random_section(int count, uint64_t seed) {
       b.y1 += int64_t(rng() % 3) - 1;
       if (check_arc(b.words(), 16) == TapeError::kNone) a = b;
     }
-    const test::ArcRunStats s = test::run_arc(a, 16, 1u << 20);
+    const circle_study::ArcRunStats s = circle_study::run_arc(a, 16, 1u << 20);
     const double off = std::fabs(a.end_radius() - a.start_radius());
     abs_err.offer(s.max_radial_error, a);
     spiral.offer(s.max_spiral_error, a);
@@ -162,7 +166,7 @@ void exhaustive_width(unsigned w) {
               a.x0 = x0, a.y0 = y0, a.x1 = x1, a.y1 = y1, a.ccw = ccw;
               if (check_arc(a.words(), w) != TapeError::kNone) continue;
               ++arcs;
-              const test::ArcRunStats s = test::run_arc(a, w, uint64_t{1} << (w + 3));
+              const circle_study::ArcRunStats s = circle_study::run_arc(a, w, uint64_t{1} << (w + 3));
               if (!s.finished || s.x != x1 || s.y != y1) ++failures;
               abs_err.offer(s.max_radial_error, a);
               const double off = std::fabs(a.end_radius() - a.start_radius());
@@ -207,7 +211,7 @@ FeedRun run_feed(int64_t r, double v_mm_min) {
   const double length_mm = M_PI / 2 * double(r) * kBlu;
   tape::Program p;
   for (int q = 0; q < 4; ++q) {
-    const QuadrantArc a = test::full_quadrant(r, q, true);
+    const QuadrantArc a = circle_study::full_quadrant(r, q, true);
     tape::Block b;
     b.n = static_cast<uint32_t>(q + 1);
     b.motion = tape::Motion::kArcCcw;
@@ -236,7 +240,7 @@ FeedRun run_feed(int64_t r, double v_mm_min) {
   }
   if (dut.outputs().error) throw std::runtime_error("feed run: the tape was refused");
   --run.gap_clocks;  // the clock after the last block, before done rises, is not a gap
-  run.iterations = test::run_arc(test::full_quadrant(r, 0, true), 16, 1u << 20).iterations;
+  run.iterations = circle_study::run_arc(circle_study::full_quadrant(r, 0, true), 16, 1u << 20).iterations;
   return run;
 }
 

@@ -24,7 +24,7 @@ class VerilatedInterp {
   static_assert(InterpConfig{}.pos_width == 32, "PosWidth must match the verilated C type");
 
   // The RTL is verilated with its default parameters: cfg must have them (only
-  // feed_modulus, an input port, is free). A width variant (sw/sweep/rtl_variant/: the
+  // feed_modulus, an input port, is free). A width variant (sw/tools/sweep/rtl_variant/: the
   // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W.
   explicit VerilatedInterp(const InterpConfig& cfg)
       : context_(std::make_unique<VerilatedContext>()),

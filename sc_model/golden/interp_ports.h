@@ -4,7 +4,7 @@
 // the field names follow the RTL port names without the _i/_o suffix, so a mismatch
 // report and a VCD name the same signal in both implementations. The outputs are listed
 // once, in interp_outputs.def, and every list of them is expanded from it; the error codes
-// (TapeError) are the tape format's, in sw/tape/tape_errors.def. docs/architecture.md
+// (TapeError) are the tape format's, in sw/host/tape/tape_errors.def. docs/architecture.md
 // explains each field.
 #pragma once
 #include <cstdint>

@@ -64,7 +64,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
                 {"to_cycle", std::min(r.vcd_window.to, s.cycles)}};
   j["cycle_limit"] = r.max_cycles;
   j["wall_seconds"] = r.wall_seconds;
-  // The software reader (sw/tape) and the engine's decoder apply the same rules: they must
+  // The software reader (sw/host/tape) and the engine's decoder apply the same rules: they must
   // agree on whether and where the tape is bad.
   const bool agree = reader_error ? s.error && reader_error->code == s.error_code &&
                                         reader_error->block == s.error_block &&

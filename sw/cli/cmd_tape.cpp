@@ -1,4 +1,4 @@
-// `ncinterp tape INPUT -o OUT.tape`: the first stage (sw/firststage, docs/first-stage.md).
+// `ncinterp tape INPUT -o OUT.tape`: the first stage (sw/host/firststage, docs/first-stage.md).
 // Reads a contour (.json contour or reference-point table, .nc/.ngc/.gcode G-code, .dat
 // airfoil), replaces it by chords within --tol (Tamm's method 1, 2 or 3) or quadrant arc
 // blocks, offsets it for the cutter, rounds it to the BLU grid and writes the tape.

@@ -4,9 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "circle_test_support.h"
+#include "arc_cases.h"
 
 namespace ncinterp::test {
+
+using circle_study::QuadrantArc;
+using circle_study::random_arc;
+using circle_study::run_arc;
 
 namespace {
 

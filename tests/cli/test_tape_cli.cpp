@@ -1,0 +1,216 @@
+// `ncinterp tape` end to end: every example input kind with every method and both arc
+// modes makes a tape that the project's tape reader reads, whose increments close on the
+// contour's end, whose report is complete and within the tolerance, and which
+// `ncinterp play` plays to the end at the expected position; bad input or options give one
+// line naming the file and line, a non-zero exit and no output file.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli_test.h"
+#include "inputs/contour_inputs.h"
+#include "tape/tape.h"
+
+namespace fs = std::filesystem;
+
+namespace ncinterp::test {
+namespace {
+
+const std::string kExamples = example("contours");
+
+// A file name as a GoogleTest parameter name (letters and digits only).
+std::string test_name_of(std::string name) {
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return name;
+}
+
+class TapeCli : public CliTest {
+ protected:
+  static nlohmann::json json_of(const std::string& p) { return nlohmann::json::parse(slurp(p)); }
+};
+
+// ---- every input kind, every method, both arc modes ----------------------------------
+
+class TapeCliExamples : public TapeCli, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(TapeCliExamples, EveryMethodAndArcModeMakesAPlayableTape) {
+  const std::string input = kExamples + "/" + GetParam();
+  const firststage::Contour contour = firststage::read_contour(input, {});
+  const double tol = 0.01, blu = 0.001;
+  const int64_t end_x = std::llround(contour.end().x / blu), end_y = std::llround(contour.end().y / blu);
+  for (int method = 1; method <= 3; ++method) {
+    std::string chords_text;
+    for (const std::string arcs : {"chords", "circle"}) {
+      SCOPED_TRACE(std::string(GetParam()) + " --method " + std::to_string(method) + " --arcs " + arcs);
+      // Frames for chord tapes, plain text for arc tapes: both writer paths.
+      const std::string out = path(arcs == "chords" ? "t.tape" : "t.nc"), report = path("r.json");
+      ASSERT_EQ(run("tape " + input + " -o " + out + " --method " + std::to_string(method) +
+                    " --arcs " + arcs + " --feed 6000 --report " + report), 0) << stderr_;
+      EXPECT_EQ(stderr_, "");
+      const nlohmann::json r = json_of(report);
+
+      // The project's reader reads it; it checks every arc block as the interpolator's
+      // decoder does (quadrant, end on the circle, registers).
+      tape::Format format;
+      const tape::Program p = tape::parse_frames(tape::load_frames(out), format);
+      EXPECT_EQ(r["blocks"].get<size_t>(), p.blocks.size());
+      EXPECT_EQ(r["tape"]["frames"].get<size_t>(), fs::file_size(out));
+      EXPECT_EQ(r["tape"]["bytes"].get<size_t>(), fs::file_size(out));
+      // Closure: the increments end on the contour's end point (tape start + sum).
+      const auto start = r["start_mm"];
+      int64_t x = std::llround(start[0].get<double>() / blu), y = std::llround(start[1].get<double>() / blu);
+      bool has_arcs = false;
+      for (const tape::Block& b : p.blocks) {
+        x += b.dx;
+        y += b.dy;
+        has_arcs |= b.motion != tape::Motion::kLine;
+      }
+      EXPECT_EQ(x, end_x);
+      EXPECT_EQ(y, end_y);
+      EXPECT_EQ(has_arcs, r["arc_blocks"].get<long>() > 0);
+      // The report: within the tolerance minus the interpolator's budget, every figure there.
+      EXPECT_LE(r["max_deviation_mm"].get<double>(), tol - blu + 1e-6);
+      EXPECT_GT(r["max_deviation_mm"].get<double>(), has_arcs ? 0.0 : 0.5 * tol);
+      long chords = 0;
+      for (const auto& e : r["chords_per_element"]) chords += e["chords"].get<long>();
+      EXPECT_EQ(chords, r["chords"].get<long>());
+      for (const char* key : {"input", "method", "tol_mm", "blu_mm", "width", "blocks", "chords_per_element",
+                              "max_deviation_mm", "tape", "planner", "time_s"})
+        EXPECT_TRUE(r.contains(key)) << key;
+      EXPECT_EQ(r["method"], method);
+
+      // Inputs without circular arcs give the same tape in both modes.
+      const std::string text = slurp(out);
+      if (arcs == "chords") {
+        for (char& ch : chords_text = text) ch = static_cast<char>(ch & 0x7f);
+      } else if (!has_arcs) {
+        EXPECT_EQ(text, chords_text);
+        continue;  // played already
+      }
+
+      // It plays: to the end, at the expected position, every block.
+      ASSERT_EQ(run("play " + out + " --reader-cps 1e6 --clock-hz 1e5 --report " + path("p.json")), 0)
+          << stderr_;
+      const nlohmann::json played = json_of(path("p.json"));
+      EXPECT_EQ(played["status"], "ok");
+      EXPECT_EQ(played["blocks"].get<size_t>(), p.blocks.size());
+      EXPECT_EQ(played["final_position_blu"]["x"].get<int64_t>(),
+                end_x - std::llround(start[0].get<double>() / blu));
+      EXPECT_EQ(played["final_position_blu"]["y"].get<int64_t>(),
+                end_y - std::llround(start[1].get<double>() / blu));
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, TapeCliExamples,
+                         ::testing::Values("circle_r50.json", "reference_table.json", "profile.json", "part.nc",
+                                           "naca2412_selig.dat", "naca2412_lednicer.dat"),
+                         [](const auto& info) { return test_name_of(info.param); });
+
+TEST_F(TapeCli, CutterOffsetTapePlaysAndClosesEachChain) {
+  const std::string input = kExamples + "/part.nc";
+  ASSERT_EQ(run("tape " + input + " -o " + path("t.tape") +
+                " --cutter-radius 3 --side right --feed 6000 --report " + path("r.json")), 0) << stderr_;
+  const nlohmann::json r = json_of(path("r.json"));
+  // The outline starts at its corner (0, 0), a convex 90-degree corner: the offset lines
+  // meet at (-3, -3).
+  EXPECT_DOUBLE_EQ(r["start_mm"][0].get<double>(), -3.0);
+  EXPECT_DOUBLE_EQ(r["start_mm"][1].get<double>(), -3.0);
+  ASSERT_EQ(run("play " + path("t.tape") + " --reader-cps 1e6 --clock-hz 1e5 --report " + path("p.json")), 0)
+      << stderr_;
+  const nlohmann::json played = json_of(path("p.json"));
+  EXPECT_EQ(played["status"], "ok");
+  // It ends where the hole's offset chain started: the hole (centre (40, 35), radius 10,
+  // clockwise) is cut from inside at radius 7, from the offset vertex near (47, 35) (the
+  // two chords meeting at (50, 35) differ a little, so the vertex is a little off the axis).
+  const double x = -3.0 + played["final_position_blu"]["x"].get<int64_t>() * 0.001;
+  const double y = -3.0 + played["final_position_blu"]["y"].get<int64_t>() * 0.001;
+  EXPECT_NEAR(std::hypot(x - 40.0, y - 35.0), 7.0, 0.01);
+  EXPECT_NEAR(x, 47.0, 0.05);
+  EXPECT_NEAR(y, 35.0, 0.05);
+}
+
+TEST_F(TapeCli, TextAndFrameTapesHoldTheSameProgram) {
+  const std::string input = kExamples + "/reference_table.json";
+  ASSERT_EQ(run("tape " + input + " -o " + path("a.tape")), 0) << stderr_;
+  ASSERT_EQ(run("tape " + input + " -o " + path("a.nc")), 0) << stderr_;
+  std::string frames = slurp(path("a.tape"));
+  for (const char ch : frames) EXPECT_TRUE(tape::has_even_parity(static_cast<uint8_t>(ch)));
+  for (char& ch : frames) ch = static_cast<char>(ch & 0x7f);
+  EXPECT_EQ(frames, slurp(path("a.nc")));
+  EXPECT_EQ(frames.rfind("%\n", 0), 0u);
+  EXPECT_NE(frames.find("G17 G21 G91 G93"), std::string::npos);
+  EXPECT_EQ(files(), (std::vector<std::string>{"a.nc", "a.tape"}));
+}
+
+// ---- bad input: one line naming file and line, exit 1, no output ----------------------
+
+struct BadCase {
+  const char* name;      // input file name (its extension picks the reader)
+  const char* text;      // content (nullptr: the file does not exist)
+  const char* expected;  // the start of the one-line message after the directory
+};
+
+// ctest lists the case by its file name.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+class TapeCliBadInput : public TapeCli, public ::testing::WithParamInterface<BadCase> {};
+
+TEST_P(TapeCliBadInput, OneLineNamingFileAndLineNoOutput) {
+  const BadCase& c = GetParam();
+  if (c.text) write(c.name, c.text);
+  EXPECT_EQ(run("tape " + path(c.name) + " -o " + path("out.tape") + " --report " + path("r.json")), 1);
+  EXPECT_EQ(stdout_, "");
+  ASSERT_FALSE(stderr_.empty());
+  EXPECT_EQ(stderr_.find('\n'), stderr_.size() - 1) << "more than one line: " << stderr_;
+  EXPECT_EQ(stderr_.rfind(path(c.name) + ":" + c.expected, 0), 0u) << stderr_;
+  EXPECT_EQ(files(), c.text ? std::vector<std::string>{c.name} : std::vector<std::string>{});
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, TapeCliBadInput,
+    ::testing::Values(
+        BadCase{"syntax.json", "{\n  \"start\": [0, 0],\n  \"segments\": [ {\"type\": \"line\" \"to\": [1, 0]} ]\n}\n",
+                "3: invalid JSON"},
+        BadCase{"type.json",
+                "{\n  \"start\": [0, 0],\n  \"segments\": [\n    {\"type\": \"line\", \"to\": [1, 0]},\n"
+                "    {\"type\": \"spiral\"}\n  ]\n}\n",
+                "5: unknown segment type \"spiral\""},
+        BadCase{"arc.json",
+                "{\"start\": [10, 0],\n \"segments\": [\n  {\"type\": \"arc\", \"center\": [0, 0], \"to\": [0, 11], "
+                "\"direction\": \"ccw\"}]}\n",
+                "3: arc end is 1 mm off the circle"},
+        BadCase{"table.json",
+                "{\"start\": [0, 1],\n \"segments\": [\n  {\"type\": \"table\", \"x0\": 0, \"h\": 1, \"y\": [1, 2, 3]}]}\n",
+                "3: table needs \"y\": at least 4 ordinates"},
+        BadCase{"word.nc", "%\nG21 G90\nG1 X10 Y0 F100\nG1 X10 Y\n", "4: word Y needs a number"},
+        BadCase{"comp.ngc", "G21\nG0 X0 Y0\nG41 D1 G1 X10 Y0\n", "3: G41: cutter compensation"},
+        BadCase{"plane.gcode", "G18\nG1 X1 Y1\n", "1: G18: only the XY plane"},
+        BadCase{"arcr.nc", "G1 X0 Y0\nG2 X10 Y0 R2\n", "2: arc radius R2 is shorter"},
+        BadCase{"num.dat", "AIRFOIL\n1.0 0.0\n0.5 0.05\n0.0 0.0\n0.5 abc\n1.0 0.0\n", "5: 'abc' is not a number"},
+        BadCase{"lednicer.dat", "AIRFOIL\n3. 3.\n\n0 0\n0.5 0.05\n1 0\n\n0 0\n0.5 -0.05\n", "9: Lednicer header announces 3 + 3 points"},
+        BadCase{"contour.txt", "G1 X1\n", "0: unknown input kind '.txt'"},
+        BadCase{"missing.json", nullptr, "0: cannot open the file"}),
+    [](const auto& info) { return test_name_of(info.param.name); });
+
+TEST_F(TapeCli, BadOptionsOneLineNoOutput) {
+  const std::string input = kExamples + "/circle_r50.json";
+  const std::string out = " -o " + path("out.tape") + " --report " + path("r.json");
+  EXPECT_EQ(run("tape " + input + out + " --tol 0.0015"), 1);  // < 1 BLU left after the budget
+  EXPECT_EQ(stderr_.rfind("ncinterp tape: --tol leaves less than 1 BLU", 0), 0u) << stderr_;
+  EXPECT_EQ(run("tape " + input + out + " --blu 0.002"), 1);
+  EXPECT_EQ(stderr_.rfind("ncinterp tape: --blu must be", 0), 0u) << stderr_;
+  EXPECT_EQ(run("tape " + input + out + " --arcs circle --cutter-radius 2"), 1);
+  EXPECT_EQ(stderr_.rfind("ncinterp tape: the cutter offset works on chords", 0), 0u) << stderr_;
+  EXPECT_EQ(run("tape " + input + " -o " + path("no/such/dir/out.tape")), 1);
+  EXPECT_NE(stderr_.find("no/such/dir/out.tape"), std::string::npos) << stderr_;
+  EXPECT_NE(run("tape " + input + out + " --method 4"), 0);  // CLI11 refuses it
+  EXPECT_NE(run("tape " + input), 0);                        // -o is required
+  EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
+}  // namespace
+}  // namespace ncinterp::test
