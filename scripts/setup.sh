@@ -10,6 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev     # command line, JSON reports
   libplplot-dev                       # SVG plots (PLplot's svg driver)
   yosys nextpnr-ice40 fpga-icestorm   # synthesis, area and Fmax
+  z3 boolector                        # SMT solvers of the formal proofs (scripts/formal.sh)
   iverilog                            # reference simulator for the benchmark
 )
 missing=()

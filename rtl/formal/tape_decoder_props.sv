@@ -1,0 +1,101 @@
+// Formal harness of the tape decoder (rtl/tape_decoder.sv with arc_prepare.sv): its two
+// handshakes (docs/interpolator.md 3.1 and 3.3).
+//
+// What is proven (BMC from reset, any frame stream, any reader and buffer timing):
+// - ap_held_stable: a block the decoder offers (blk_valid_o) stays offered and unchanged,
+//   every field, until the buffer takes it (blk_ready_i);
+// - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
+//   more than K consecutive clocks unless the decoder is in error or holds a block. K =
+//   max(2^(W+1), 2W + 3) + 2 covers an arc's preparation (max(N, 2W + 3) clocks,
+//   N < 2^(W+1)) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
+//   frames, or an error, and nothing else stalls the reader.
+// Environment: reset in the first clock, tape_end_i stays high once high and no frame
+// comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
+// preparation's internals (which the area redesign changes). The depth (24 clocks) covers
+// reading a short program and K clocks beyond (e.g. the end of a program); an arc block
+// needs about 15 clocks to be read, so its preparation is covered only partly (the cover
+// shows it starts); --deep goes to 40.
+module tape_decoder_props #(
+  parameter int W  = 2,
+  parameter int FW = 2,
+  parameter int NW = 2,
+  parameter int OW = 5
+) (
+  input logic       clk_i,
+  input logic       rst_ni,
+  input logic [7:0] frame_i,
+  input logic       frame_valid_i,
+  input logic       tape_end_i,
+  input logic       blk_ready_i
+);
+
+  localparam int KWidth = $clog2(W + 1);
+  localparam int SW = FW + W + 1;
+  localparam int K = ((1 << (W + 1)) > 2 * W + 3 ? (1 << (W + 1)) : 2 * W + 3) + 2;
+  localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
+
+  logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y;
+  logic              end_blk, tape_ended, err;
+  logic [NW-1:0]     n, err_block;
+  logic [1:0]        motion;
+  logic [W-1:0]      dx, dy, i, j;
+  logic [SW-1:0]     step;
+  logic [KWidth-1:0] k;
+  logic [3:0]        err_code;
+  logic [OW-1:0]     err_offset;
+
+  tape_decoder #(
+    .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .SeqWidth(NW),
+    .OffsetWidth(OW)
+  ) u_dut (
+    .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
+    .blk_valid_o(blk_valid), .blk_ready_i, .blk_n_o(n), .blk_motion_o(motion),
+    .blk_dx_o(dx), .blk_dx_neg_o(dx_neg), .blk_dy_o(dy), .blk_dy_neg_o(dy_neg),
+    .blk_i_o(i), .blk_j_o(j), .blk_step_o(step), .blk_k_o(k), .blk_grow_x_o(grow_x),
+    .blk_grow_y_o(grow_y), .end_o(end_blk), .tape_ended_o(tape_ended), .err_o(err),
+    .err_code_o(err_code), .err_block_o(err_block), .err_offset_o(err_offset)
+  );
+
+  logic [BW-1:0] block;
+  assign block = {n, motion, dx_neg, dx, dy_neg, dy, i, j, step, k, grow_x, grow_y};
+
+  // Model: clocks frame_ready has been low (saturating), the tape end seen.
+  logic       f_init = 1'b1;
+  logic       f_tape_end_q;
+  logic [5:0] f_low_q;
+
+  always_ff @(posedge clk_i) begin
+    f_init <= 1'b0;
+    f_tape_end_q <= tape_end_i && rst_ni;
+    if (!rst_ni || frame_ready || err || blk_valid) f_low_q <= '0;
+    else if (f_low_q != '1) f_low_q <= f_low_q + 1'b1;
+  end
+
+  always_comb begin
+    assume (rst_ni == !f_init);
+    if (f_tape_end_q) assume (tape_end_i);
+    if (tape_end_i) assume (!frame_valid_i);
+  end
+
+  always_comb begin
+    if (!f_init) ap_ready_bounded: assert (f_low_q <= 6'(K));
+  end
+
+  logic f_past_valid = 1'b0;
+  always_ff @(posedge clk_i) begin
+    f_past_valid <= 1'b1;
+    if (f_past_valid && $past(rst_ni) && $past(blk_valid && !blk_ready_i)) begin
+      ap_held_stable: assert (blk_valid && $stable(block));
+    end
+  end
+
+  // Reachability: a block is taken by the buffer; the reader is held off while an arc is
+  // prepared (frame_ready low, no error, no block held: only in ARC).
+  always_comb begin
+    if (!f_init) begin
+      cp_block_taken: cover (blk_valid && blk_ready_i);
+      cp_arc_holds_reader: cover (f_low_q == 6'd3);
+    end
+  end
+
+endmodule
