@@ -60,7 +60,7 @@ void dump_case(const std::string& dir, const regression::Case& c, const regressi
     ctx.setup.cutter_radius_mm = c.first_stage.cutter_radius_mm;
     ctx.setup.cutter_left = c.first_stage.side_left;
     write_file_atomically(base + ".report.json", checker::check_report_json(*out, ctx).dump(1) + "\n");
-    const checker::IntPoint s = out->reference ? out->reference->start() : checker::IntPoint{};
+    const checker::GridPoint s = out->reference ? out->reference->start() : checker::GridPoint{};
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "ncinterp check %s.tape --contour %s --tol %g --blu %g --width %u --reader-cps %g "
@@ -95,9 +95,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-arcs", a.no_arcs, "never cut arcs as G02/G03 blocks (--arcs circle); by default half the contours with arcs are");
   CLI11_PARSE(app, argc, argv);
 
-  std::vector<checker::EngineKind> engines;
-  if (a.engine != "rtl") engines.push_back(checker::EngineKind::kGolden);
-  if (a.engine != "golden") engines.push_back(checker::EngineKind::kRtl);
+  std::vector<EngineKind> engines;
+  if (a.engine != "rtl") engines.push_back(EngineKind::kGolden);
+  if (a.engine != "golden") engines.push_back(EngineKind::kRtl);
   regression::RandomCaseLimits limits;
   limits.seconds = a.seconds;
   limits.arcs_circle_allowed = !a.no_arcs;
@@ -117,9 +117,9 @@ int main(int argc, char** argv) {
       std::printf("%llu: FAIL generating the case: %s\n", static_cast<unsigned long long>(seed), e.what());
       continue;
     }
-    for (checker::EngineKind engine : engines) {
+    for (EngineKind engine : engines) {
       c.check.engine = engine;
-      if (engine == checker::EngineKind::kRtl &&
+      if (engine == EngineKind::kRtl &&
           (c.first_stage.width != 16 || c.first_stage.blu_mm != 0.001)) {
         // The verilated RTL has the default parameters only (W 16, 3 fraction digits).
         ++skipped;
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
         if (ratio > worst_ratio) worst_ratio = ratio, worst_case = c.name;
         char buf[256];
         std::snprintf(buf, sizeof buf, "%s %s m%d tol %g R %g W %u: total %.4f mm (%.0f%% of tol), path %.3f BLU, %llu clocks",
-                      c.name.c_str(), checker::engine_name(engine), c.first_stage.method,
+                      c.name.c_str(), engine_name(engine), c.first_stage.method,
                       c.first_stage.tol_mm, c.first_stage.cutter_radius_mm, c.first_stage.width,
                       out.checker->total_error().max * out.blu_mm, 100 * ratio, out.checker->path_error().max,
                       static_cast<unsigned long long>(out.checker->cycles()));
@@ -149,7 +149,7 @@ int main(int argc, char** argv) {
         }
       } catch (const std::exception& e) {
         ++failures;
-        std::printf("%s %s: FAIL: %s\n", c.name.c_str(), checker::engine_name(engine), e.what());
+        std::printf("%s %s: FAIL: %s\n", c.name.c_str(), engine_name(engine), e.what());
         if (!a.dump.empty()) dump_case(a.dump, c, input, nullptr, e.what());
       }
       std::fflush(stdout);

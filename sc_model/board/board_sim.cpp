@@ -286,8 +286,8 @@ BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, Pty& pty,
   Runner<Model> runner(o, c, pty, vcd, vcd_path);
   const auto t0 = std::chrono::steady_clock::now();
   BoardSimResult r = runner.run();
-  const InterpConfig cfg = system::play_config(o.clock_hz);
-  r.readback = tape::parse_frames_partial(r.frames, system::tape_format_for(cfg));
+  const InterpConfig cfg = interp_config(o.clock_hz);
+  r.readback = tape::parse_frames_partial(r.frames, tape_format_of(cfg));
   system::PlayResult& p = r.play;
   p.summary = runner.replay(r.readback.program);
   p.summary.cycles = std::max(p.summary.cycles, runner.cycles());

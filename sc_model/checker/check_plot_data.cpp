@@ -65,8 +65,8 @@ CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, size_t bins)
   d.tol_mm = tol_mm;
   const TrajectoryChecker& c = *o.checker;
   const double blu = o.blu_mm;
-  const IntPoint start = o.reference ? o.reference->start() : IntPoint{};
-  auto mm = [&](IntPoint p) { return PlotPoint{(start.x + p.x) * blu, (start.y + p.y) * blu}; };
+  const GridPoint start = o.reference ? o.reference->start() : GridPoint{};
+  auto mm = [&](GridPoint p) { return PlotPoint{(start.x + p.x) * blu, (start.y + p.y) * blu}; };
   auto mmv = [&](Vec2 p) { return PlotPoint{(start.x + p.x) * blu, (start.y + p.y) * blu}; };
 
   d.overview = {INFINITY, INFINITY, -INFINITY, -INFINITY};

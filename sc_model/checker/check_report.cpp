@@ -13,8 +13,8 @@ using nlohmann::json;
 
 struct Frame {
   double blu_mm;
-  IntPoint start;
-  json xy(IntPoint p) const {
+  GridPoint start;
+  json xy(GridPoint p) const {
     return {{"x_mm", (start.x + p.x) * blu_mm}, {"y_mm", (start.y + p.y) * blu_mm}};
   }
 };
@@ -39,7 +39,7 @@ std::string fmt(const char* format, double v) {
 }
 
 Frame frame_of(const CheckOutcome& o) {
-  return {o.blu_mm, o.reference ? o.reference->start() : IntPoint{}};
+  return {o.blu_mm, o.reference ? o.reference->start() : GridPoint{}};
 }
 
 }  // namespace

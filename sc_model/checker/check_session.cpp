@@ -33,8 +33,6 @@ uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
 
 }  // namespace
 
-const char* engine_name(EngineKind engine) { return engine == EngineKind::kGolden ? "golden" : "rtl"; }
-
 bool rtl_available() {
 #ifdef NCINTERP_CHECKER_HAS_RTL
   return true;
@@ -45,17 +43,6 @@ bool rtl_available() {
 
 double blu_of(const tape::Format& format) { return std::pow(10.0, -static_cast<double>(format.frac_digits)); }
 
-InterpConfig interp_config(const tape::Format& format, double clock_hz) {
-  InterpConfig cfg;
-  cfg.inc_width = format.inc_width;
-  cfg.frac_digits = format.frac_digits;
-  cfg.feed_frac_digits = format.feed_frac_digits;
-  cfg.feed_width = format.feed_width;
-  cfg.seq_width = format.seq_width;
-  cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
-  return cfg;
-}
-
 void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, firststage::GridPoint start) {
   s.format = firststage::tape_format(o);
   s.tol_mm = o.tol_mm;
@@ -64,13 +51,12 @@ void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, fi
   s.cutter_left = o.side_left;
 }
 
-IntPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup) {
+GridPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup) {
   const double to_blu = 1.0 / blu_of(setup.format);
   firststage::Vec2 s;
   if (setup.start_mm) s = *setup.start_mm;
   else if (contour) s = contour->origin;
-  const firststage::GridPoint g = firststage::round_to_grid(to_blu * s);
-  return {g.x, g.y};
+  return firststage::round_to_grid(to_blu * s);
 }
 
 CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Contour* contour,
@@ -93,7 +79,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   out.program = tape::parse_frames(frames, setup.format);
   std::vector<ProgrammedBlock> blocks = lay_out(out.program);
 
-  const InterpConfig cfg = interp_config(setup.format, setup.clock_hz);
+  const InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
   if (contour) {
     ReferenceOptions ro;
     ro.blu_mm = out.blu_mm;

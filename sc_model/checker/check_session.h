@@ -20,8 +20,6 @@
 
 namespace ncinterp::checker {
 
-enum class EngineKind { kGolden, kRtl };
-const char* engine_name(EngineKind engine);
 // True when this build has the verilated RTL harness.
 bool rtl_available();
 
@@ -62,9 +60,8 @@ double blu_of(const tape::Format& format);
 // Sets what a tape the first stage made with options o tells the checker: its format, the
 // tolerance, the cutter and the tape's start (grid point, BLU), as `ncinterp tape` wrote them.
 void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, firststage::GridPoint start);
-InterpConfig interp_config(const tape::Format& format, double clock_hz);
 // The tape start's grid point: setup.start_mm, else the contour's start rounded to the grid.
-IntPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup);
+GridPoint tape_start(const firststage::Contour* contour, const CheckSetup& setup);
 
 // Throws tape::TapeFormatError for a bad tape, std::invalid_argument for bad options.
 CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Contour* contour,

@@ -37,7 +37,7 @@ Vec2 ProgrammedBlock::point_at(double s) const {
 std::vector<ProgrammedBlock> lay_out(const tape::Program& program) {
   std::vector<ProgrammedBlock> out;
   out.reserve(program.blocks.size());
-  IntPoint cur;
+  GridPoint cur;
   for (size_t k = 0; k < program.blocks.size(); ++k) {
     const tape::Block& t = program.blocks[k];
     ProgrammedBlock b;

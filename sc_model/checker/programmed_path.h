@@ -8,24 +8,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/grid_point.h"
 #include "geometry/vec2.h"
 #include "tape/tape.h"
 
 namespace ncinterp::checker {
 
+using firststage::GridPoint;
 using firststage::Vec2;
-
-struct IntPoint {
-  int64_t x = 0, y = 0;
-  bool operator==(const IntPoint& o) const { return x == o.x && y == o.y; }
-  bool operator!=(const IntPoint& o) const { return !(*this == o); }
-};
-inline Vec2 to_vec(IntPoint p) { return {static_cast<double>(p.x), static_cast<double>(p.y)}; }
 
 struct ProgrammedBlock {
   size_t index = 0;          // 0-based position on the tape
   tape::Block tape;          // as read: N, motion, dx, dy, i, j, feed
-  IntPoint start, end;       // absolute, BLU (tape start = (0, 0))
+  GridPoint start, end;      // absolute, BLU (tape start = (0, 0))
   Vec2 centre;               // arcs: absolute centre, BLU
   bool is_arc() const { return tape.motion != tape::Motion::kLine; }
   // Signed sweep of an arc from start to end (rad, > 0 counter-clockwise); a block whose

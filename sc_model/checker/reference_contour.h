@@ -23,7 +23,7 @@ namespace ncinterp::checker {
 
 struct ReferenceOptions {
   double blu_mm = 0.001;
-  IntPoint start;                // absolute grid point (BLU) of the tape start
+  GridPoint start;               // absolute grid point (BLU) of the tape start
   double cutter_radius_mm = 0.0; // 0: the tape is the contour itself
   bool cutter_left = true;       // cutter on the left of the direction of travel
 };
@@ -55,7 +55,7 @@ class ReferenceContour {
   const std::vector<firststage::Segment>& rapid_segments() const { return rapids_; }
   double radius_blu() const { return radius_; }
   bool cutter_left() const { return options_.cutter_left; }
-  IntPoint start() const { return options_.start; }
+  GridPoint start() const { return options_.start; }
 
  private:
   TotalError centre_only(Vec2 position) const;  // e = d - R, without the path

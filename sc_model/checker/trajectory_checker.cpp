@@ -10,7 +10,7 @@ namespace {
 
 const char* axis_name(int a) { return a == 0 ? "X" : "Y"; }
 
-std::string point_text(IntPoint p) {
+std::string point_text(GridPoint p) {
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
 }
 
@@ -43,7 +43,7 @@ const char* rule_name(Rule rule) {
   return "?";
 }
 
-void ErrorStat::add(double e, uint64_t at_cycle, IntPoint at, size_t in_block) {
+void ErrorStat::add(double e, uint64_t at_cycle, GridPoint at, size_t in_block) {
   if (count == 0 || e > max) {
     max = e;
     cycle = at_cycle;

@@ -52,7 +52,7 @@ struct Violation {
   size_t block = 0;    // index into the programmed blocks (SIZE_MAX: none)
   uint32_t n = 0;      // the block's N
   uint64_t cycle = 0;
-  IntPoint position;   // tool position at that clock, BLU from the tape start
+  GridPoint position;  // tool position at that clock, BLU from the tape start
   std::string detail;
 };
 
@@ -62,9 +62,9 @@ struct ErrorStat {
   double sum_sq = 0.0;
   uint64_t count = 0;
   uint64_t cycle = 0;     // where the max is
-  IntPoint position;
+  GridPoint position;
   size_t block = 0;
-  void add(double e, uint64_t at_cycle, IntPoint at, size_t in_block);
+  void add(double e, uint64_t at_cycle, GridPoint at, size_t in_block);
   void merge(const ErrorStat& o);
   double rms() const;
 };
@@ -93,7 +93,7 @@ struct BlockResult {
 struct PulseSample {
   uint64_t cycle;
   uint32_t block;  // index
-  IntPoint position;
+  GridPoint position;
   float path_error, total_error;  // BLU; total < 0: not measured (rapid)
 };
 
@@ -131,7 +131,7 @@ class TrajectoryChecker {
   uint64_t pulse_count() const { return pulse_count_; }  // clocks with a step on any axis
   const ErrorStat& path_error() const { return path_; }
   const ErrorStat& total_error() const { return total_; }
-  IntPoint position() const { return pos_; }
+  GridPoint position() const { return pos_; }
   uint64_t cycles() const { return last_cycle_; }
   uint64_t gap_clocks() const { return gap_clocks_; }
   const InterpOutputs& last_outputs() const { return prev_; }
@@ -151,7 +151,7 @@ class TrajectoryChecker {
   bool started_ = false;
   InterpOutputs prev_;
   uint64_t last_cycle_ = 0;
-  IntPoint pos_;                 // integrated pulses
+  GridPoint pos_;                // integrated pulses
   uint64_t gap_clocks_ = 0;
 
   // The block playing.

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "tape.h"
 #include "tape_errors.h"
 
 namespace ncinterp {
@@ -43,6 +44,19 @@ struct InterpConfig {
     return static_cast<uint64_t>(60.0 * clock_hz + 0.5) * scale;
   }
 };
+
+// Which implementation plays the interpolator: the golden model or the verilated RTL.
+enum class EngineKind { kGolden, kRtl };
+inline const char* engine_name(EngineKind engine) {
+  return engine == EngineKind::kGolden ? "golden" : "rtl";
+}
+
+// The interpolator that plays tapes of `format` with a clock of `clock_hz`: the format's
+// widths, the other parameters at their defaults; the feed modulus for the clock. With the
+// default format, the default machine (the verilated RTL's parameters).
+InterpConfig interp_config(double clock_hz, const tape::Format& format = {});
+// The tape format an interpolator with `cfg` decodes (the inverse of interp_config).
+tape::Format tape_format_of(const InterpConfig& cfg);
 
 struct InterpInputs {
   uint8_t frame = 0;

@@ -13,22 +13,6 @@
 
 namespace ncinterp::system {
 
-InterpConfig play_config(double clock_hz) {
-  InterpConfig cfg;
-  cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, cfg.feed_frac_digits);
-  return cfg;
-}
-
-tape::Format tape_format_for(const InterpConfig& cfg) {
-  tape::Format f;
-  f.frac_digits = cfg.frac_digits;
-  f.feed_frac_digits = cfg.feed_frac_digits;
-  f.inc_width = cfg.inc_width;
-  f.feed_width = cfg.feed_width;
-  f.seq_width = cfg.seq_width;
-  return f;
-}
-
 uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t cycles_per_frame,
                          const InterpConfig& cfg) {
   uint64_t total = static_cast<uint64_t>(frames) * cycles_per_frame;
@@ -64,7 +48,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
 
   PlayResult r;
-  r.config = play_config(opt.clock_hz);
+  r.config = interp_config(opt.clock_hz);  // the default machine
   r.clock_hz = opt.clock_hz;
   r.reader_cps = opt.reader_cps;
   r.cycles_per_frame = FrameSource::cycles_per_frame_for(opt.clock_hz, opt.reader_cps);

@@ -46,11 +46,6 @@ struct PlayResult {
   bool ok() const { return summary.done && !summary.error && !limit_reached; }
 };
 
-// The interpolator configuration `play` uses: default widths (those of the verilated RTL),
-// feed modulus for the clock.
-InterpConfig play_config(double clock_hz);
-// The tape format the interpolator with `cfg` decodes (no circle mode yet).
-tape::Format tape_format_for(const InterpConfig& cfg);
 // A cycle limit no correct engine reaches on this tape: reading every frame, then every
 // block at its programmed or saturated duration, doubled, plus a margin.
 uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t cycles_per_frame,

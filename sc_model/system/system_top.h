@@ -19,8 +19,6 @@
 
 namespace ncinterp::system {
 
-enum class EngineKind { kGolden, kRtl };
-
 struct SystemSetup {
   InterpConfig config;
   EngineKind engine = EngineKind::kGolden;

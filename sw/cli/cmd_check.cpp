@@ -55,7 +55,7 @@ int run(const CheckArgs& a) {
   setup.format.inc_width = a.width;
   setup.clock_hz = a.clock_hz;
   setup.reader_cps = a.reader_cps;
-  setup.engine = a.engine == "rtl" ? checker::EngineKind::kRtl : checker::EngineKind::kGolden;
+  setup.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";

@@ -114,12 +114,12 @@ int run(const CosimArgs& a) {
   const std::vector<uint8_t> frames = tape::load_frames(a.tape);
 
   cosim::Options o;
-  o.config = system::play_config(a.clock_hz);
+  o.config = interp_config(a.clock_hz);
   o.cycles_per_frame = FrameSource::cycles_per_frame_for(a.clock_hz, a.reader_cps);
   // Default limit: every frame read and every (good) block at its programmed or saturated
   // duration, doubled: no pair of correct engines reaches it.
   const tape::ParseResult readback =
-      tape::parse_frames_partial(frames, system::tape_format_for(o.config));
+      tape::parse_frames_partial(frames, tape_format_of(o.config));
   o.max_cycles = a.max_cycles ? a.max_cycles
                               : system::cycle_limit_for(readback.program, frames.size(),
                                                         o.cycles_per_frame, o.config);

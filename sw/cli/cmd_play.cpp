@@ -74,7 +74,7 @@ int run(const PlayArgs& a) {
   // The software reader's view of the tape: the programmed blocks the monitors judge the
   // pulses against (every block before the first error, for a bad tape).
   const tape::ParseResult readback =
-      tape::parse_frames_partial(frames, tape_format_for(play_config(a.clock_hz)));
+      tape::parse_frames_partial(frames, tape_format_of(interp_config(a.clock_hz)));
 
   Progress progress;
   if (isatty(STDERR_FILENO)) opt.progress = std::ref(progress);

@@ -85,7 +85,7 @@ int run(const SendArgs& a) {
   std::vector<uint8_t> frames = tape::load_frames(a.tape);
   const size_t tape_frames = frames.size();
   frames.push_back(board::kEndOfTapeFrame);
-  const unsigned frac_digits = system::play_config(12e6).frac_digits;
+  const unsigned frac_digits = interp_config(12e6).frac_digits;
   Port port(a.port, speed, a.flow == "rtscts");
   const bool tty = isatty(STDERR_FILENO);
 
@@ -134,7 +134,7 @@ int run(const SendArgs& a) {
           // The software reader's words for the same error, if it finds it.
           const tape::ParseResult rb = tape::parse_frames_partial(
               std::vector<uint8_t>(frames.begin(), frames.begin() + static_cast<long>(tape_frames)),
-              system::tape_format_for(system::play_config(12e6)));
+              tape_format_of(interp_config(12e6)));
           const bool same = rb.error && rb.error->code == s->code && rb.error->block == s->block &&
                             rb.error->offset == s->offset;
           std::cerr << a.tape << ": block N" << s->block << ", offset " << s->offset << ": "

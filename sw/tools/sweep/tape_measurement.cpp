@@ -39,7 +39,7 @@ InputResult measure_input(const SweepInput& input, unsigned width, const Measure
   checker::match_first_stage(cs, o, tape.start);
   cs.clock_hz = setup.clock_hz;
   cs.reader_cps = setup.reader_cps;
-  cs.engine = checker::EngineKind::kGolden;
+  cs.engine = EngineKind::kGolden;
   cs.keep_pulses = false;
   try {
     const checker::CheckOutcome out = checker::run_check(tape.frames, &input.contour, cs);

@@ -63,7 +63,7 @@ TEST_P(FaultDetection, CheckerAndScoreboardReportTheFirstDifferingClockAndBlock)
   std::mt19937 rng(100 + static_cast<int>(kind));
   CheckSetup setup;
   setup.reader_cps = 1e6;  // one frame per clock
-  const InterpConfig cfg = interp_config(setup.format, setup.clock_hz);
+  const InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
   int visible = 0, invisible = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const tape::Program p = test::random_line_program(rng, 8, 9, cfg.feed_modulus, 60, 1500);

@@ -23,12 +23,12 @@ TEST(ProgrammedPath, BlocksAreLaidEndToEndFromTheOrigin) {
               arc(tape::Motion::kLine, 0, -100, 0, 0)};
   const auto blocks = lay_out(p);
   ASSERT_EQ(blocks.size(), 3u);
-  EXPECT_EQ(blocks[1].start, (IntPoint{100, 0}));
-  EXPECT_EQ(blocks[1].end, (IntPoint{0, 100}));
+  EXPECT_EQ(blocks[1].start, (GridPoint{100, 0}));
+  EXPECT_EQ(blocks[1].end, (GridPoint{0, 100}));
   EXPECT_NEAR(blocks[1].centre.x, 0.0, 0);
   EXPECT_NEAR(blocks[1].sweep(), M_PI / 2, 1e-12);
   EXPECT_NEAR(blocks[1].length(), 50 * M_PI, 1e-9);
-  EXPECT_EQ(blocks[2].end, (IntPoint{0, 0}));
+  EXPECT_EQ(blocks[2].end, (GridPoint{0, 0}));
 }
 
 TEST(ProgrammedPath, LineDistanceIsToTheSegment) {

@@ -25,7 +25,7 @@ TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRule) {
   std::mt19937 rng(11);
   CheckSetup setup;
   setup.clock_hz = 1e6;
-  const uint64_t modulus = interp_config(setup.format, setup.clock_hz).feed_modulus;
+  const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
   for (int prog = 0; prog < 150; ++prog) {
     const tape::Program p = test::random_line_program(rng, 12, prog % 3 == 0 ? 16 : 9, modulus, 100, 3000);
     // Fast reader for most, a slow one (gaps between blocks) for some.
@@ -47,7 +47,7 @@ TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRule) {
     }
     int64_t x = 0, y = 0;
     for (const auto& b : p.blocks) x += b.dx, y += b.dy;
-    EXPECT_EQ(c.position(), (IntPoint{x, y}));
+    EXPECT_EQ(c.position(), (GridPoint{x, y}));
   }
 }
 

@@ -23,7 +23,7 @@ using test::OutputRecorder;
 
 Options options_at(double clock_hz) {
   Options o;
-  o.config = test::config_for_clock(clock_hz);
+  o.config = interp_config(clock_hz);
   o.cycles_per_frame = 1;
   o.max_cycles = 100'000'000;
   return o;

@@ -79,7 +79,7 @@ double max_circle_error(const OutputRecorder& rec) {
 }
 
 TEST(CircleInterp, FiftyMillimetreCircleOfFourQuadrantsReturnsToItsStart) {
-  const InterpConfig cfg = test::config_for_clock(1e6);
+  const InterpConfig cfg = interp_config(1e6);
   for (bool ccw : {true, false}) {
     const tape::Program p = circle_program(1, ccw);
     PlayRun r = play(cfg, test::program_frames(p));
@@ -97,7 +97,7 @@ TEST(CircleInterp, FiftyMillimetreCircleOfFourQuadrantsReturnsToItsStart) {
 }
 
 TEST(CircleInterp, TenTurnsDoNotDrift) {
-  const InterpConfig cfg = test::config_for_clock(1e6);
+  const InterpConfig cfg = interp_config(1e6);
   const tape::Program p = circle_program(10, true);
   PlayRun r = play(cfg, test::program_frames(p));
   ASSERT_TRUE(r.out.done);
@@ -119,7 +119,7 @@ TEST(CircleInterp, TenTurnsDoNotDrift) {
 }
 
 TEST(CircleInterp, RandomProgramsOfArcsAndLines) {
-  const InterpConfig cfg = test::config_for_clock(1e3);  // saturates high feeds, short runs
+  const InterpConfig cfg = interp_config(1e3);  // saturates high feeds, short runs
   std::mt19937_64 rng(21);
   int arcs = 0;
   for (int t = 0; t < 20; ++t) {
@@ -141,7 +141,7 @@ struct BadArc {
 };
 
 TEST(CircleInterp, BadArcsStopWithTheirErrorAndNoPulse) {
-  const InterpConfig cfg = test::config_for_clock(1e6);
+  const InterpConfig cfg = interp_config(1e6);
   const std::vector<BadArc> cases = {
       {"G03 X-1.000 Y1.000 I0.000 J0.000 F100.000", TapeError::kArcZeroRadius},
       {"G02 X-1.000 Y1.000 I-1.000 J0.000 F100.000", TapeError::kArcCrossesQuadrant},
@@ -169,7 +169,7 @@ TEST(CircleInterp, BadArcsStopWithTheirErrorAndNoPulse) {
 
 // G02/G03 are modal like G01, and an arc block needs I or J only when they are not 0.
 TEST(CircleInterp, ArcMotionIsModal) {
-  const InterpConfig cfg = test::config_for_clock(1e6);
+  const InterpConfig cfg = interp_config(1e6);
   const std::string text =
       "%\nG17 G21 G91 G93\nN1 G03 X-0.005 Y0.005 I-0.005 F600.000\nN2 X-0.005 Y-0.005 J-0.005\n"
       "N3 G01 X0.010\nM02\n%\n";

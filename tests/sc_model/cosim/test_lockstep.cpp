@@ -28,7 +28,7 @@ using test::OutputRecorder;
 
 Options fast_options() {
   Options o;
-  o.config = test::config_for_clock(1e3);  // 1 kHz: high feeds saturate, runs stay short
+  o.config = interp_config(1e3);  // 1 kHz: high feeds saturate, runs stay short
   o.cycles_per_frame = 1;
   o.max_cycles = 50'000'000;
   return o;
@@ -70,7 +70,7 @@ INSTANTIATE_TEST_SUITE_P(Shards, CosimRandom, ::testing::Range(0, 6));
 // idle stretches between iterations, and a slow reader that leaves gaps.
 TEST(Cosim, SlowReaderAndRealFeedsStayInLockStep) {
   Options o;
-  o.config = test::config_for_clock(1e6);
+  o.config = interp_config(1e6);
   o.cycles_per_frame = 200;
   const std::vector<LineBlock> prog = {{1, 1234, -567, 3000000}, {2, -5, 2, 20000000},
                                        {3, 0, 0, 90000000},      {4, 65535, 65535, 4000000000ull}};

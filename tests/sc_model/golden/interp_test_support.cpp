@@ -225,10 +225,4 @@ std::vector<LineBlock> random_line_program(std::mt19937_64& rng, unsigned inc_wi
 }
 
 
-InterpConfig config_for_clock(double clock_hz) {
-  InterpConfig cfg;
-  cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, cfg.feed_frac_digits);
-  return cfg;
-}
-
 }  // namespace ncinterp::test

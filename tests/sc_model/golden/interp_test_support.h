@@ -70,9 +70,6 @@ class OutputRecorder {
 InterpOutputs run_golden(GoldenInterp& dut, const std::vector<uint8_t>& frames,
                          uint64_t cycles_per_frame, uint64_t max_cycles, OutputRecorder& rec);
 
-// Config with the given clock (feed modulus) and default widths.
-InterpConfig config_for_clock(double clock_hz);
-
 // A random line program: 1..8 blocks; increments are 0, +-(2^inc_width - 1), uniform over
 // the whole range, medium or small, of both signs; feeds make each block last
 // 1 .. 3 * 2^k + 8 clocks (a mix of saturated and phase-accumulated blocks that keeps the

@@ -49,7 +49,7 @@ TEST(GoldenInterp, RejectsWidthsItCannotModel) {
 // iteration per clock, and after j iterations X has exactly j pulses (2^31 + j (2^32 - 1)
 // < (j + 1) 2^32) and Y, with |dy| = 2^31, floor((j + 1) / 2).
 TEST(GoldenInterp, PlaysAFullWidthBlockAt32Bits) {
-  InterpConfig cfg = test::config_for_clock(1e6);
+  InterpConfig cfg = interp_config(1e6);
   cfg.inc_width = 32;
   const char* tape = "%\nG17 G21 G91 G93\nN1 G01 X4294967.295 Y-2147483.648 F4000000.000\nM02\n%\n";
   GoldenInterp dut(cfg);
@@ -67,7 +67,7 @@ TEST(GoldenInterp, PlaysAFullWidthBlockAt32Bits) {
 // One block, not saturated: pulses come exactly at the iterations the phase accumulator
 // and the integrators dictate (docs 5.2/5.3), and the block takes ceil(M/F) clocks.
 TEST(GoldenInterp, SingleBlockPulseTimesFollowTheFeedAndDdaFormulas) {
-  const InterpConfig cfg = test::config_for_clock(1e6);
+  const InterpConfig cfg = interp_config(1e6);
   const std::vector<LineBlock> prog = {{1, 1000, -500, 600000}};
   GoldenInterp dut(cfg);
   OutputRecorder rec;
@@ -112,7 +112,7 @@ TEST(GoldenInterp, BlockDurationRoundsTheProgrammedTimeUp) {
 }
 
 TEST(GoldenInterp, SaturatedBlockTakesTwoToTheKPlusOneClocksAndSaysSo) {
-  const InterpConfig cfg = test::config_for_clock(1e6);
+  const InterpConfig cfg = interp_config(1e6);
   const std::vector<LineBlock> prog = {{7, 1000, 300, 4000000000ull}};  // F << 10 >= M
   GoldenInterp dut(cfg);
   OutputRecorder rec;
@@ -140,7 +140,7 @@ TEST(GoldenInterp, ZeroMoveIsADwellOfOneOverF) {
 TEST(GoldenInterp, HandshakeAndBlockLatency) {
   const std::string text = "%\nN1 G01 X0.002 F100.000\nM02\n%\n";
   const size_t lf = text.find('\n', text.find("N1"));
-  GoldenInterp dut(test::config_for_clock(1e6));
+  GoldenInterp dut(interp_config(1e6));
   FrameSource source(frames_of(text), 1);
   std::vector<bool> ready{dut.outputs().frame_ready}, busy{false};
   std::vector<uint64_t> taken{0};
@@ -204,7 +204,7 @@ TEST(GoldenInterp, SlowReaderLeavesObservableGaps) {
 
 TEST(GoldenInterp, BlockWithoutNCarriesThePreviousN) {
   const std::string text = "%\nN7 G01 X0.001 F1000.000\nY0.002\nM02\n%\n";
-  GoldenInterp dut(test::config_for_clock(1e3));
+  GoldenInterp dut(interp_config(1e3));
   OutputRecorder rec;
   ASSERT_TRUE(run_golden(dut, frames_of(text), 1, kMaxCycles, rec).done);
   ASSERT_EQ(rec.pulses.size(), 3u);
@@ -217,7 +217,7 @@ TEST(GoldenInterp, LeaderCommentsSpacesAndSignsAreAccepted) {
   const std::string text =
       std::string("\0\0\0", 3) + "%\r\n(setup)\nG17 G21 G91 G93 (xy mm incremental)\n"
       "N1 G1 X+0.003 Y-0.00 2 F1000.000\nN2 X-0.000\nM30\n%\n\0\0";
-  GoldenInterp dut(test::config_for_clock(1e3));
+  GoldenInterp dut(interp_config(1e3));
   OutputRecorder rec;
   const InterpOutputs out = run_golden(dut, frames_of(text), 1, kMaxCycles, rec);
   ASSERT_TRUE(out.done) << "error " << int(out.error_code) << " at " << out.error_offset;
@@ -230,7 +230,7 @@ class GoldenBadTape : public ::testing::TestWithParam<BadTape> {};
 
 TEST_P(GoldenBadTape, StopsAtTheBlockBoundaryWithBlockAndOffset) {
   const BadTape& bad = GetParam();
-  GoldenInterp dut(test::config_for_clock(1e3));
+  GoldenInterp dut(interp_config(1e3));
   OutputRecorder rec;
   const InterpOutputs out = run_golden(dut, bad.frames(), 1, kMaxCycles, rec);
   ASSERT_TRUE(out.error);
@@ -249,7 +249,7 @@ INSTANTIATE_TEST_SUITE_P(Tapes, GoldenBadTape, ::testing::ValuesIn(test::bad_tap
 TEST(GoldenInterp, ErrorRisesTwoClocksAfterTheLastGoodBlockFinishes) {
   // The bad block is found while N10 plays (fast reader, slow block).
   const std::string text = "%\nN10 G01 X0.004 F60000.000\nN20 Q\n";
-  GoldenInterp dut(test::config_for_clock(1e3));
+  GoldenInterp dut(interp_config(1e3));
   OutputRecorder rec;
   uint64_t last_busy = 0, error_cycle = 0;
   FrameSource source(frames_of(text), 1);
@@ -272,7 +272,7 @@ struct FaultRun {
 };
 
 FaultRun run_with_fault(const std::string& text, const GoldenInterp::Fault& fault) {
-  GoldenInterp dut(test::config_for_clock(1e3));
+  GoldenInterp dut(interp_config(1e3));
   dut.inject(fault);
   FaultRun run;
   FrameSource source(frames_of(text), 1);
@@ -354,7 +354,7 @@ TEST(GoldenFault, FaultBeforeAnyBlockWaitsForABlock) {
 TEST(GoldenRandom, LineTapesPlayExactlyWithinTheBound) {
   std::mt19937_64 rng(20240601);
   for (int t = 0; t < 100; ++t) {
-    const InterpConfig cfg = test::config_for_clock(1e3);
+    const InterpConfig cfg = interp_config(1e3);
     const std::vector<LineBlock> prog = test::random_line_program(rng, 16, cfg.feed_modulus);
     GoldenInterp dut(cfg);
     OutputRecorder rec;

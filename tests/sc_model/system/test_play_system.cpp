@@ -39,7 +39,7 @@ std::vector<uint8_t> frames_of(const tape::Program& p) {
 
 // The same tape on the plain C++ golden model with the same reader timing.
 PlaySummary plain_golden_run(const std::vector<uint8_t>& frames, const tape::Program& p) {
-  const InterpConfig cfg = play_config(kClockHz);
+  const InterpConfig cfg = interp_config(kClockHz);
   GoldenInterp dut(cfg);
   dut.reset();
   FrameSource source(frames, FrameSource::cycles_per_frame_for(kClockHz, kReaderCps));
@@ -156,7 +156,7 @@ TEST_F(PlayFiles, BadTapeStopsAtTheBlockAndLeavesNoVcd) {
   const size_t bad = text.find("N40") + 4;  // "N40 Q01 ...": unknown letter in block N40
   text[bad] = 'Q';
   const auto frames = tape::add_parity(text);
-  const tape::ParseResult readback = tape::parse_frames_partial(frames, tape_format_for(play_config(kClockHz)));
+  const tape::ParseResult readback = tape::parse_frames_partial(frames, tape_format_of(interp_config(kClockHz)));
   ASSERT_TRUE(readback.error);
   PlayOptions o = options(EngineKind::kGolden);
   o.vcd_path = path("bad.vcd");

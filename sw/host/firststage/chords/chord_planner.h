@@ -14,15 +14,10 @@
 
 #include "chords/chord_methods.h"
 #include "chords/span.h"
+#include "geometry/grid_point.h"
 
 namespace ncinterp::firststage {
 
-struct GridPoint {
-  int64_t x = 0, y = 0;  // BLU
-  bool operator==(const GridPoint& o) const { return x == o.x && y == o.y; }
-  bool operator!=(const GridPoint& o) const { return !(*this == o); }
-};
-inline Vec2 to_vec(GridPoint g) { return {static_cast<double>(g.x), static_cast<double>(g.y)}; }
 GridPoint round_to_grid(Vec2 v);
 
 struct PlannerOptions {

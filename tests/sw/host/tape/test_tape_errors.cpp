@@ -3,6 +3,7 @@
 // marker is removed before parsing), so offsets are never counted by hand.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
 
 using namespace std::string_literals;
@@ -155,6 +156,21 @@ TEST(TapeErrors, WidthsFollowTheFormat) {
   f.frac_digits = 0;
   EXPECT_NO_THROW(parse_frames(add_parity("%\nN1 G01 X-255. F1.000\nM02\n%\n"), f));
   EXPECT_THROW(parse_frames(add_parity("%\nN1 G01 X-255 F1.000\nM02\n%\n"), f), TapeFormatError);
+}
+
+// The codes of tape_errors.def: 0 .. n-1 without a gap, each with its own message.
+TEST(TapeErrors, CodesAreDenseWithOwnMessages) {
+  std::set<std::string> messages;
+  unsigned expected = 0;
+#define TAPE_ERROR(name, code, message)                                                   \
+  EXPECT_EQ(static_cast<unsigned>(TapeError::k##name), expected++) << #name;              \
+  EXPECT_STREQ(tape_error_message(TapeError::k##name), message);                          \
+  EXPECT_TRUE(messages.insert(message).second) << #name " shares its message";
+#include "tape_errors.def"
+#undef TAPE_ERROR
+  EXPECT_STREQ(tape_error_message(static_cast<TapeError>(expected)), "unknown error code");
+  EXPECT_LT(expected - 1, 1u << kTapeErrorBits);
+  EXPECT_GE(expected - 1, 1u << (kTapeErrorBits - 1));  // no bit to spare
 }
 
 }  // namespace

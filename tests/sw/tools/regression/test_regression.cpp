@@ -44,7 +44,7 @@ Case case_of(const Example& e) {
   return c;
 }
 
-void expect_clean_check(const Case& c, checker::EngineKind engine) {
+void expect_clean_check(const Case& c, EngineKind engine) {
   Case run = c;
   run.check.engine = engine;
   const checker::CheckOutcome out = run_case(run);
@@ -68,13 +68,13 @@ void expect_clean_check(const Case& c, checker::EngineKind engine) {
 class ExampleRegression : public ::testing::TestWithParam<Example> {};
 
 TEST_P(ExampleRegression, GoldenWithinTolerance) {
-  expect_clean_check(case_of(GetParam()), checker::EngineKind::kGolden);
+  expect_clean_check(case_of(GetParam()), EngineKind::kGolden);
 }
 
 TEST_P(ExampleRegression, RtlWithinTolerance) {
   ASSERT_TRUE(checker::rtl_available()) << "NOT RUN: no verilated RTL in this build";
   const Case c = case_of(GetParam());
-  expect_clean_check(c, checker::EngineKind::kRtl);
+  expect_clean_check(c, EngineKind::kRtl);
 }
 
 TEST_P(ExampleRegression, CosimClean) {
@@ -83,7 +83,7 @@ TEST_P(ExampleRegression, CosimClean) {
 #else
   const Case c = case_of(GetParam());
   cosim::Options o;
-  o.config = checker::interp_config(firststage::tape_format(c.first_stage), c.check.clock_hz);
+  o.config = interp_config(c.check.clock_hz, firststage::tape_format(c.first_stage));
   o.cycles_per_frame = FrameSource::cycles_per_frame_for(c.check.clock_hz, c.check.reader_cps);
   const cosim::Result r = cosim::run_lockstep(make_tape(c), o);
   ASSERT_FALSE(r.mismatch) << cosim::describe(*r.mismatch);
@@ -120,11 +120,11 @@ TEST_P(RandomRegression, GoldenAndRtlWithinTolerance) {
   RandomCaseLimits limits;
   limits.seconds = 0.3;
   Case c = random_case(GetParam(), limits);
-  c.check.engine = checker::EngineKind::kGolden;
+  c.check.engine = EngineKind::kGolden;
   const checker::CheckOutcome g = run_case(c);
   EXPECT_TRUE(g.passed()) << describe(c, g);
   if (!checker::rtl_available() || c.first_stage.width != 16) return;  // RTL: W = 16 only
-  c.check.engine = checker::EngineKind::kRtl;
+  c.check.engine = EngineKind::kRtl;
   const checker::CheckOutcome r = run_case(c);
   EXPECT_TRUE(r.passed()) << describe(c, r);
   EXPECT_EQ(r.checker->total_error().max, g.checker->total_error().max);

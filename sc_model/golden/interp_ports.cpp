@@ -1,0 +1,27 @@
+// Between the tape format and the interpolator's configuration (see interp_ports.h).
+#include "interp_ports.h"
+
+namespace ncinterp {
+
+InterpConfig interp_config(double clock_hz, const tape::Format& format) {
+  InterpConfig cfg;
+  cfg.inc_width = format.inc_width;
+  cfg.frac_digits = format.frac_digits;
+  cfg.feed_frac_digits = format.feed_frac_digits;
+  cfg.feed_width = format.feed_width;
+  cfg.seq_width = format.seq_width;
+  cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
+  return cfg;
+}
+
+tape::Format tape_format_of(const InterpConfig& cfg) {
+  tape::Format f;
+  f.frac_digits = cfg.frac_digits;
+  f.feed_frac_digits = cfg.feed_frac_digits;
+  f.inc_width = cfg.inc_width;
+  f.feed_width = cfg.feed_width;
+  f.seq_width = cfg.seq_width;
+  return f;
+}
+
+}  // namespace ncinterp
