@@ -103,5 +103,14 @@ TEST_F(SweepCli, AToolNotOnPathIsStatedInItsColumns) {
   EXPECT_EQ(at(rows, 1, "check"), "pass");  // the rest of the row is measured
 }
 
+TEST_F(SweepCli, UsageAndOutputErrorsExitOneAndWriteNothing) {
+  EXPECT_EQ(run("sweep " + circle_), 1);  // --widths is required
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(run("sweep " + circle_ + " --widths 10 --no-synth --no-rtl --csv " + path("s.csv") +
+                " --svg " + path("nodir/s.svg")), 1);
+  EXPECT_NE(stderr_.find("nodir/s.svg"), std::string::npos) << stderr_;
+  EXPECT_TRUE(files().empty());
+}
+
 }  // namespace
 }  // namespace ncinterp::sweep
