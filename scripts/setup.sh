@@ -11,6 +11,7 @@ packages=(
   libplplot-dev                       # SVG plots (PLplot's svg driver)
   yosys nextpnr-ice40 fpga-icestorm   # synthesis, area and Fmax
   iverilog                            # reference simulator for the benchmark
+  gtkwave xvfb x11-apps               # waves; the screenshot of waves/interp.gtkw (xwd)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -68,7 +68,14 @@ TEST_F(PlayCli, BothEnginesPlayTheExampleIdentically) {
   ASSERT_TRUE(gtkw) << "waves/interp.gtkw missing";
   std::string line;
   int named = 0;
+  int filters = 0;
   while (std::getline(gtkw, line)) {
+    if (line[0] == '^') {  // "^N waves/NAME.gtkwf": a translate filter file, relative to the root
+      const std::string file = line.substr(line.find(' ') + 1);
+      EXPECT_TRUE(fs::exists(std::string(NCINTERP_EXAMPLES_DIR) + "/../" + file)) << line;
+      ++filters;
+      continue;
+    }
     if (line.empty() || line[0] == '@' || line[0] == '[' || line[0] == '*' || line[0] == '-') continue;
     const size_t bracket = line.find('[');
     const std::string name = line.substr(0, bracket);
@@ -78,6 +85,7 @@ TEST_F(PlayCli, BothEnginesPlayTheExampleIdentically) {
     ++named;
   }
   EXPECT_GT(named, 25);
+  EXPECT_EQ(filters, 3);  // frame_i as characters, decoder state and error code by name
 }
 
 // The bundled circle (four G03 quadrants of radius 50 mm) on both engines: the same report,

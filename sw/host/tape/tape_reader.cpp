@@ -50,7 +50,7 @@ class Reader {
       // Without a '%' every frame is leader: the program never started, whatever M02 the
       // leader holds.
       if (state_ == State::kLeader)
-        fail(kTruncatedTape, frames.size(),
+        fail(TapeError::kTruncatedTape, frames.size(),
              "truncated tape: no '%' starts the program, so all of it is leader");
       if (state_ != State::kEnd)
         fail(TapeError::kTruncatedTape, frames.size(), "truncated tape: it ends before M02/M30");
