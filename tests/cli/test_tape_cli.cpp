@@ -200,6 +200,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"far.nc", "G21 G90\nG1 X0 Y0 F100\nG1 X1000000000 Y0\n", "3: coordinate out of range"},
         BadCase{"tiny.json", "{\"start\": [0, 0],\n \"segments\": [\n  {\"type\": \"line\", \"to\": [0.0002, 0]}]}\n",
                 "0: no cutting move of 1 BLU or more"},
+        BadCase{"c2um.nc", "G21 G90\nG0 X0.002 Y0\nG3 X0.002 Y0 I-0.002 J0 F100\nM2\n",
+                "3: full circle of radius 0.002 mm is within the tolerance"},
         BadCase{"contour.txt", "G1 X1\n", "0: unknown input kind '.txt'"},
         BadCase{"missing.json", nullptr, "0: cannot open the file"}),
     [](const auto& info) { return test_name_of(info.param.name); });
@@ -284,6 +286,28 @@ TEST_F(TapeCli, PointBeyondThePositionCounterIsRefusedBeforeTheWork) {
   EXPECT_EQ(stderr_.rfind(path("pos.nc") + ":3: point (5000, 0) mm is outside the interpolator's position "
                           "range +-2147.48 mm", 0), 0u) << stderr_;
   EXPECT_EQ(files(), std::vector<std::string>{"pos.nc"});
+}
+
+TEST_F(TapeCli, LooseTolerancesAndNarrowWidthsWork) {
+  // Found in the trial: all of these stopped with "no chord within the tolerance fits".
+  const std::string circle = kExamples + "/circle_r50.json", naca = kExamples + "/naca2412_selig.dat";
+  for (const std::string& args : {circle + " --tol 40", naca + " --tol 25", circle + " --width 2",
+                                  circle + " --width 3", naca + " --width 3"}) {
+    SCOPED_TRACE(args);
+    EXPECT_EQ(run("tape " + args + " -o " + path("t.tape")), 0) << stderr_;
+    EXPECT_EQ(stderr_, "");
+  }
+}
+
+TEST_F(TapeCli, SummaryAndReportSayTheDeviationIsSampled) {
+  ASSERT_EQ(run("tape " + kExamples + "/circle_r50.json -o " + path("t.tape") + " --tol 10 --report " +
+                path("r.json")), 0) << stderr_;
+  EXPECT_NE(stdout_.find("max deviation"), std::string::npos) << stdout_;
+  EXPECT_NE(stdout_.find("sampled every 2.5 mm"), std::string::npos) << stdout_;
+  EXPECT_NE(stdout_.find(" straight, "), std::string::npos) << stdout_;  // every block kind named
+  const nlohmann::json r = json_of(path("r.json"));
+  EXPECT_EQ(r["deviation"]["step_mm"].get<double>(), 2.5);
+  EXPECT_NE(r["deviation"]["measure"].get<std::string>().find("not a bound"), std::string::npos);
 }
 
 TEST_F(TapeCli, AirfoilChordMustBePositive) {

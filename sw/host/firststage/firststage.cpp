@@ -165,7 +165,15 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
   res.chord_delta_mm = delta_blu * o.blu_mm;
   std::vector<Segment> segs;
   segs.reserve(contour.segments.size());
-  for (const Segment& s : contour.segments) segs.push_back(s.scaled(to_blu));
+  for (const Segment& s : contour.segments) {
+    // A full circle no wider than delta' lies within delta' of its own start: its chords
+    // would start and end at one point (nothing to cut). Refused with the reason, up front.
+    if (!s.rapid && s.is_arc() && std::fabs(s.sweep()) > 2 * M_PI - 1e-9 && s.radius() * to_blu <= delta_blu)
+      throw InputError(contour.file, s.source_line,
+                       "full circle of radius " + fmt_mm(s.radius()) + " mm is within the tolerance (delta' " +
+                           fmt_mm(delta_blu * o.blu_mm) + " mm) of its start: nothing to cut; use a smaller --tol");
+    segs.push_back(s.scaled(to_blu));
+  }
   res.chords_per_element.assign(contour.element_names.size(), 0);
 
   PlannerOptions popt;
