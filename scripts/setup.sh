@@ -12,6 +12,7 @@ packages=(
   yosys nextpnr-ice40 fpga-icestorm   # synthesis, area and Fmax
   z3 boolector                        # SMT solvers of the formal proofs (scripts/formal.sh)
   iverilog                            # reference simulator for the benchmark
+  gtkwave xvfb x11-apps               # waves; the screenshot of waves/interp.gtkw (xwd)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -16,11 +16,18 @@ namespace ncinterp::cosim {
 
 void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
                    uint64_t first_cycle, uint64_t last_cycle, const std::string& path) {
+  AtomicOutputFile out(path);  // removed again unless committed
+  write_rtl_vcd(frames, options, clock_hz, first_cycle, last_cycle, out);
+  out.commit();
+}
+
+void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
+                   uint64_t first_cycle, uint64_t last_cycle, AtomicOutputFile& out) {
+  const std::string& path = out.path();
   VerilatedInterp<Vinterp_top_trace> rtl(options.config);
   rtl.context().traceEverOn(true);
   VerilatedVcdC vcd;
   rtl.model().trace(&vcd, 99);
-  AtomicOutputFile out(path);  // removed again unless committed
   vcd.open(out.temp_path().c_str());
   if (!vcd.isOpen()) throw std::runtime_error(path + ": cannot open for writing");
   const uint64_t period = std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / clock_hz)));
@@ -36,7 +43,6 @@ void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, d
     source.clock(ready);
   }
   vcd.close();
-  out.commit();
 }
 
 }  // namespace ncinterp::cosim

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "atomic_file.h"
 #include "lockstep.h"
 
 namespace ncinterp::cosim {
@@ -18,5 +19,8 @@ namespace ncinterp::cosim {
 // period. Throws std::runtime_error on I/O failure.
 void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
                    uint64_t first_cycle, uint64_t last_cycle, const std::string& path);
+// The same into an output the caller reserved (an OutputSet) and commits.
+void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, double clock_hz,
+                   uint64_t first_cycle, uint64_t last_cycle, AtomicOutputFile& out);
 
 }  // namespace ncinterp::cosim

@@ -2,6 +2,7 @@
 // SystemC simulation, and the monitors' summary.
 #include "play_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -12,6 +13,14 @@
 #include "frame_source.h"
 
 namespace ncinterp::system {
+
+namespace {
+// Bytes per clock of a VCD, from the measurements of docs/waves.md section 2 (gear.nc):
+// golden 45 bytes per busy cycle; RTL 205 per busy cycle, 128 over the tape lead-in, about
+// 190 over a whole part (0.7 GB for 3.78 M cycles). Rough on purpose: it is for a warning.
+constexpr double kGoldenVcdBytesPerCycle = 45.0;
+constexpr double kRtlVcdBytesPerCycle = 190.0;
+}  // namespace
 
 uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t cycles_per_frame,
                          const InterpConfig& cfg) {
@@ -32,6 +41,13 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     total += std::max(iterations + 1, programmed) + prepare + 3;
   }
   return 2 * total + 100000;
+}
+
+uint64_t vcd_size_estimate(EngineKind engine, uint64_t cycles) {
+  // Bytes per clock of whole-part VCDs (examples/gear.nc, docs/waves.md "VCD size"): the
+  // RTL engine's VCD also holds the decoder and DDA internals.
+  const double per_cycle = engine == EngineKind::kRtl ? kRtlVcdBytesPerCycle : kGoldenVcdBytesPerCycle;
+  return static_cast<uint64_t>(per_cycle * static_cast<double>(cycles));
 }
 
 PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& program,
@@ -67,9 +83,15 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   if (!opt.vcd_path.empty()) {
     r.vcd_window = resolve_vcd_window(opt.vcd_from, opt.vcd_to, frames, r.config,
                                       r.cycles_per_frame, r.max_cycles);
-    vcd = std::make_unique<AtomicOutputFile>(opt.vcd_path);
-    setup.vcd_path = vcd->temp_path();
+    if (!opt.vcd_file) vcd = std::make_unique<AtomicOutputFile>(opt.vcd_path);
+    setup.vcd_path = opt.vcd_file ? opt.vcd_file->temp_path() : vcd->temp_path();
     setup.vcd_window = r.vcd_window;
+    if (opt.vcd_estimate) {
+      // The limit is twice the expected run (cycle_limit_for); the window cuts it further.
+      const uint64_t expected_end = std::min(r.vcd_window.to, r.max_cycles / 2);
+      const uint64_t cycles = expected_end > r.vcd_window.from ? expected_end - r.vcd_window.from : 0;
+      opt.vcd_estimate(vcd_size_estimate(opt.engine, cycles), cycles);
+    }
   }
   if (opt.progress) {
     const size_t blocks = program.blocks.size();
@@ -88,13 +110,13 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   r.limit_reached = top->limit_reached();
   r.frames_taken = top->reader().source().frames_taken();
 
-  if (vcd) {
+  if (!opt.vcd_path.empty()) {
     if (!top->vcd_started())
       throw std::runtime_error(opt.vcd_path + ": the VCD window starts at cycle " +
                                std::to_string(r.vcd_window.from) + ", after the run ended at cycle " +
                                std::to_string(r.summary.cycles));
     if (r.ok()) {
-      vcd->commit();
+      if (vcd) vcd->commit();
       r.vcd_written = true;
     }
   }

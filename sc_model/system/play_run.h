@@ -12,6 +12,7 @@
 
 #include "play_monitor.h"
 #include "system_top.h"
+#include "atomic_file.h"
 #include "tape.h"
 #include "vcd_window.h"
 
@@ -22,9 +23,15 @@ struct PlayOptions {
   double clock_hz = 1e6;
   double reader_cps = 1000;  // tape reader, characters (frames) per second
   std::string vcd_path;      // empty: no VCD
+  // When set, the VCD goes to this file reserved by the caller (an OutputSet), which also
+  // commits it: run_play then only sets vcd_written (the VCD is complete and wanted).
+  AtomicOutputFile* vcd_file = nullptr;
   std::optional<VcdBound> vcd_from, vcd_to;
   uint64_t max_cycles = 0;   // 0: a safe bound computed from the tape
   std::function<void(uint64_t cycle, size_t blocks_done, size_t blocks)> progress;
+  // Called once before the simulation when a VCD is asked for, with its estimated size
+  // (vcd_size_estimate): the CLI warns about a large file before writing it.
+  std::function<void(uint64_t bytes, uint64_t cycles)> vcd_estimate;
 };
 
 struct PlayResult {
@@ -40,7 +47,7 @@ struct PlayResult {
   bool limit_reached = false;
   std::string vcd_path;  // as asked for (empty: none)
   CycleWindow vcd_window;
-  bool vcd_written = false;
+  bool vcd_written = false;  // committed, or, with vcd_file, complete and to be committed
   double wall_seconds = 0;
   // The program played to its end (done), within the cycle limit.
   bool ok() const { return summary.done && !summary.error && !limit_reached; }
@@ -48,6 +55,10 @@ struct PlayResult {
 
 // A cycle limit no correct engine reaches on this tape: reading every frame, then every
 // block at its programmed or saturated duration, doubled, plus a margin.
+// Estimated size of a VCD of `cycles` clocks of this engine: measured bytes per clock of a
+// whole-part VCD (docs/waves.md, "VCD size"), so a rough figure, right within a factor ~2.
+uint64_t vcd_size_estimate(EngineKind engine, uint64_t cycles);
+
 uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t cycles_per_frame,
                          const InterpConfig& cfg);
 

@@ -4,16 +4,16 @@
 // the tape and the documented timing; reports per block and overall (docs/verification.md).
 // Exit 0 when every rule holds and the total error is within --tol, 2 when the check fails,
 // 1 on bad input (one line naming the file, block/line and offset; no output file written).
-#include <unistd.h>
-
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
-#include "atomic_file.h"
+#include "output_set.h"
+#include "progress.h"
 #include "check_plot.h"
 #include "check_report.h"
 #include "check_session.h"
@@ -38,6 +38,7 @@ struct CheckArgs {
   std::string side = "left";
   std::vector<double> start;
   double airfoil_chord_mm = 100.0;
+  double cut_z_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 unsigned frac_digits_for(double blu_mm) {
@@ -50,6 +51,12 @@ unsigned frac_digits_for(double blu_mm) {
 }
 
 int run(const CheckArgs& a) {
+  // Every output reserved before the work (a bad path fails now; a failure leaves none).
+  OutputSet outputs;
+  outputs.input(a.tape);
+  outputs.input(a.contour);
+  AtomicOutputFile* report_out = outputs.add(a.report);
+  AtomicOutputFile* svg_out = outputs.add(a.svg);
   checker::CheckSetup setup;
   setup.format.frac_digits = frac_digits_for(a.blu_mm);
   setup.format.inc_width = a.width;
@@ -61,10 +68,10 @@ int run(const CheckArgs& a) {
   setup.cutter_left = a.side == "left";
   if (!a.start.empty()) setup.start_mm = firststage::Vec2{a.start[0], a.start[1]};
   setup.keep_pulses = !a.svg.empty();
-  if (isatty(STDERR_FILENO)) {
-    setup.progress = [](uint64_t cycle, uint64_t budget) {
-      std::fprintf(stderr, "\rcheck: %llu clocks (at most %llu)   ", static_cast<unsigned long long>(cycle),
-                   static_cast<unsigned long long>(budget));
+  Progress progress("check");
+  if (progress.enabled()) {
+    setup.progress = [&progress](uint64_t cycle, uint64_t budget) {
+      progress.show(std::to_string(cycle) + " clocks (at most " + std::to_string(budget) + ")");
     };
   }
 
@@ -73,7 +80,9 @@ int run(const CheckArgs& a) {
   if (!a.contour.empty()) {
     firststage::InputOptions io;
     io.airfoil_chord_mm = a.airfoil_chord_mm;
+    io.cut_z_mm = a.cut_z_mm;
     contour = firststage::read_contour(a.contour, io);
+    for (const std::string& w : contour->warnings) std::cerr << w << "\n";
   }
   if (a.cutter_radius_mm > 0 && !contour)
     throw std::invalid_argument("--cutter-radius needs --contour (the offset contour is built from it)");
@@ -86,19 +95,15 @@ int run(const CheckArgs& a) {
               << e.info().message << "\n";
     throw CommandExit{1};
   }
-  if (setup.progress) std::fprintf(stderr, "\r%60s\r", "");
+  progress.clear();
 
   checker::ReportContext ctx;
   ctx.tape_file = a.tape;
   ctx.contour_file = a.contour;
   ctx.setup = setup;
-  // Every output is built in memory first, then each written atomically: a failure
-  // building one leaves no file at all.
-  const std::string report =
-      a.report.empty() ? "" : checker::check_report_json(outcome, ctx).dump(2) + "\n";
-  const std::string svg = a.svg.empty() ? "" : checker::check_svg(outcome, ctx);
-  if (!a.report.empty()) write_file_atomically(a.report, report);
-  if (!a.svg.empty()) write_file_atomically(a.svg, svg);
+  if (report_out) OutputSet::write(report_out, checker::check_report_json(outcome, ctx).dump(2) + "\n");
+  if (svg_out) OutputSet::write(svg_out, checker::check_svg(outcome, ctx));
+  outputs.commit();
   std::cout << checker::check_summary_text(outcome, ctx);
   return outcome.passed() ? 0 : 2;
 }
@@ -137,6 +142,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm (as given to `tape`)")
       ->capture_default_str();
+  cmd->add_option("--cut-z", args->cut_z_mm, "G-code contour with Z: the cutting depth, mm (as given to `tape`)");
   cmd->callback([args]() {
     int code = 0;
     try {

@@ -7,7 +7,6 @@
 // bad options) or a bad tape (both engines agree on the error: "TAPE: block N, offset K:
 // message"); 2 mismatch; 3 cycle limit reached. --report (JSON) is written in every case
 // the cosim ran (it explains the failure); every file is written to a temporary and renamed.
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -17,7 +16,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "atomic_file.h"
+#include "output_set.h"
+#include "progress.h"
 #include "command_registry.h"
 #include "frame_source.h"
 #include "lockstep.h"
@@ -111,6 +111,11 @@ int run(const CosimArgs& a) {
   if (!(a.clock_hz >= 1.0 && a.clock_hz <= 1e11))
     throw std::invalid_argument("--clock-hz must be between 1 and 1e11");
   if (!(a.reader_cps > 0.0)) throw std::invalid_argument("--reader-cps must be positive");
+  // Every output reserved before the run (a bad path fails now; a failure leaves none).
+  OutputSet outputs;
+  outputs.input(a.tape);
+  AtomicOutputFile* report_out = outputs.add(a.report);
+  AtomicOutputFile* vcd_out = outputs.add(a.vcd);
   const std::vector<uint8_t> frames = tape::load_frames(a.tape);
 
   cosim::Options o;
@@ -124,18 +129,14 @@ int run(const CosimArgs& a) {
                               : system::cycle_limit_for(readback.program, frames.size(),
                                                         o.cycles_per_frame, o.config);
   if (!a.fault.empty()) o.fault = parse_fault(a.fault);
-  bool progress_shown = false;
-  if (isatty(STDERR_FILENO)) {
-    o.progress = [&](uint64_t cycle) {
-      std::fprintf(stderr, "\rcosim: %llu cycles   ", static_cast<unsigned long long>(cycle));
-      progress_shown = true;
-    };
-  }
+  Progress progress("cosim");
+  if (progress.enabled())
+    o.progress = [&progress](uint64_t cycle) { progress.show(std::to_string(cycle) + " cycles"); };
 
   const auto t0 = std::chrono::steady_clock::now();
   const cosim::Result r = cosim::run_lockstep(frames, o);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (progress_shown) std::fprintf(stderr, "\r%40s\r", "");
+  progress.clear();
 
   std::string vcd_written;
   uint64_t vcd_from = 0, vcd_to = 0;
@@ -143,15 +144,16 @@ int run(const CosimArgs& a) {
     if (r.mismatch) {
       vcd_to = r.mismatch->cycle + 10;
       vcd_from = r.mismatch->cycle > a.vcd_window ? r.mismatch->cycle - a.vcd_window : 1;
-      cosim::write_rtl_vcd(frames, o, a.clock_hz, vcd_from, vcd_to, a.vcd);
+      cosim::write_rtl_vcd(frames, o, a.clock_hz, vcd_from, vcd_to, *vcd_out);
       vcd_written = a.vcd;
     } else {
+      outputs.discard(vcd_out);
       std::cerr << a.tape << ": no mismatch, so no VCD written (--vcd shows the clocks before a mismatch)\n";
     }
   }
-  if (!a.report.empty())
-    write_file_atomically(a.report,
-                          report_json(a, o, r, seconds, vcd_written, vcd_from, vcd_to).dump(2) + "\n");
+  if (report_out)
+    OutputSet::write(report_out, report_json(a, o, r, seconds, vcd_written, vcd_from, vcd_to).dump(2) + "\n");
+  outputs.commit();
 
   if (r.mismatch) {
     std::cerr << a.tape << ": RTL and golden model differ at " << cosim::describe(*r.mismatch) << "\n";

@@ -8,7 +8,8 @@
 #include <iostream>
 #include <memory>
 
-#include "atomic_file.h"
+#include "output_set.h"
+#include "progress.h"
 #include "command_registry.h"
 #include "dda_comparison.h"
 #include "interp_ports.h"
@@ -29,12 +30,21 @@ struct MethodsArgs {
 };
 
 void run(const MethodsArgs& a) {
+  // Every output reserved before the study (a bad path fails now; a failure leaves none).
+  OutputSet outputs;
+  AtomicOutputFile* csv_out = outputs.add(a.csv);
+  AtomicOutputFile* svg_out = outputs.add(a.svg);
   sampled::StudyConfig cfg;
   cfg.radii_mm = a.radius_mm > 0 ? std::vector<double>{a.radius_mm} : sampled::default_radii_mm();
   cfg.hs = a.h > 0 ? std::vector<double>{a.h} : sampled::default_h_sweep();
   cfg.turns = a.turns;
   cfg.word_bits = a.word_bits;
   cfg.starter = *sampled::parse_starter(a.start);
+  Progress progress("methods");
+  if (progress.enabled())
+    cfg.progress = [&progress](size_t done, size_t total) {
+      progress.show(std::to_string(done) + " of " + std::to_string(total) + " runs");
+    };
 
   // The hardware DDA works in BLU of the interpolator's default tape format.
   const double blu_mm = std::pow(10.0, -static_cast<double>(InterpConfig{}.frac_digits));
@@ -42,18 +52,12 @@ void run(const MethodsArgs& a) {
   for (double r : cfg.radii_mm) radii_blu.push_back(std::llround(r / blu_mm));
 
   const sampled::Study study = sampled::run_study(cfg);
+  progress.clear();
   const auto comparison = sampled::compare_with_hardware_dda(radii_blu, cfg.starter);
   const std::string text = sampled::methods_text(study, comparison, blu_mm);
-  // Every output is complete in its temporary file before any is renamed into place, so a
-  // failure (an unwritable directory, a full disk) leaves no output file at all.
-  std::vector<std::unique_ptr<AtomicOutputFile>> outputs;
-  const auto stage = [&outputs](const std::string& path, const std::string& content) {
-    outputs.push_back(std::make_unique<AtomicOutputFile>(path));
-    outputs.back()->stream() << content;
-  };
-  if (!a.csv.empty()) stage(a.csv, sampled::methods_csv(study));
-  if (!a.svg.empty()) stage(a.svg, sampled::methods_svg(study));
-  for (auto& out : outputs) out->commit();
+  if (csv_out) OutputSet::write(csv_out, sampled::methods_csv(study));
+  if (svg_out) OutputSet::write(svg_out, sampled::methods_svg(study));
+  outputs.commit();
   std::cout << text;
 }
 

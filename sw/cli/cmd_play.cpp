@@ -7,15 +7,14 @@
 // still gets its report (complete, status "error": it is the explanation of the failure),
 // but never a VCD; every file is written to a temporary and renamed, so nothing is ever
 // half-written (docs/waves.md).
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 
-#include "atomic_file.h"
+#include "output_set.h"
+#include "progress.h"
 #include "command_registry.h"
 #include "play_report.h"
 #include "play_run.h"
@@ -23,6 +22,9 @@
 
 namespace ncinterp::cli {
 namespace {
+
+// A VCD larger than this is announced before it is written.
+constexpr uint64_t kLargeVcdBytes = 100'000'000;
 
 struct PlayArgs {
   std::string tape;
@@ -33,35 +35,27 @@ struct PlayArgs {
   uint64_t max_cycles = 0;
 };
 
-// Progress on stderr at most five times a second; erased at the end.
-class Progress {
- public:
-  void operator()(uint64_t cycle, size_t done, size_t blocks) {
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_ < std::chrono::milliseconds(200)) return;
-    last_ = now;
-    std::fprintf(stderr, "\rplay: cycle %llu, block %zu of %zu   ",
-                 static_cast<unsigned long long>(cycle), done, blocks);
-    shown_ = true;
-  }
-  void clear() {
-    if (shown_) std::fprintf(stderr, "\r%60s\r", "");
-    shown_ = false;
-  }
-  ~Progress() { clear(); }
-
- private:
-  std::chrono::steady_clock::time_point last_{};
-  bool shown_ = false;
-};
-
 int run(const PlayArgs& a) {
   using namespace ncinterp::system;
+  // Every output reserved before the simulation: a bad --vcd or --report path fails now,
+  // not after the whole part has been played.
+  OutputSet outputs;
+  outputs.input(a.tape);
+  AtomicOutputFile* report_out = outputs.add(a.report);
+  AtomicOutputFile* vcd_out = outputs.add(a.vcd);
   PlayOptions opt;
   opt.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
   opt.clock_hz = a.clock_hz;
   opt.reader_cps = a.reader_cps;
   opt.vcd_path = a.vcd;
+  opt.vcd_file = vcd_out;
+  // A whole part at full clock is hundreds of MB: say so before writing it.
+  opt.vcd_estimate = [&a](uint64_t bytes, uint64_t cycles) {
+    if (bytes < kLargeVcdBytes) return;
+    std::fprintf(stderr, "%s: warning: the VCD of about %llu cycles will be about %.0f MB; "
+                 "--vcd-from/--vcd-to (cycles or N<block>) write a window\n",
+                 a.vcd.c_str(), static_cast<unsigned long long>(cycles), static_cast<double>(bytes) / 1e6);
+  };
   opt.max_cycles = a.max_cycles;
   if (!a.vcd_from.empty()) opt.vcd_from = parse_vcd_bound(a.vcd_from);
   if (!a.vcd_to.empty()) opt.vcd_to = parse_vcd_bound(a.vcd_to);
@@ -76,12 +70,19 @@ int run(const PlayArgs& a) {
   const tape::ParseResult readback =
       tape::parse_frames_partial(frames, tape_format_of(interp_config(a.clock_hz)));
 
-  Progress progress;
-  if (isatty(STDERR_FILENO)) opt.progress = std::ref(progress);
+  Progress progress("play");
+  if (progress.enabled())
+    opt.progress = [&progress](uint64_t cycle, size_t done, size_t blocks) {
+      if (progress.due())
+        progress.show("cycle " + std::to_string(cycle) + ", block " + std::to_string(done) + " of " +
+                      std::to_string(blocks));
+    };
   const PlayResult r = run_play(frames, readback.program, opt);
   progress.clear();
   const nlohmann::json report = play_report(r, a.tape, a.engine, readback.error);
-  if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
+  if (report_out) OutputSet::write(report_out, report.dump(2) + "\n");
+  if (vcd_out && !r.vcd_written) outputs.discard(vcd_out);  // a bad tape gets no VCD
+  outputs.commit();
   if (!report["reader_agrees"].get<bool>())
     std::cerr << a.tape << ": warning: the software tape reader and the " << a.engine
               << " engine disagree about this tape"

@@ -8,7 +8,6 @@
 // so an interrupted or failed sweep leaves no half table. A width whose first stage,
 // synthesis or variant build fails gets its row with the reason; only bad options or an
 // unreadable input end the command (exit 1, one line naming the file).
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -16,7 +15,8 @@
 #include <memory>
 #include <thread>
 
-#include "atomic_file.h"
+#include "output_set.h"
+#include "progress.h"
 #include "command_registry.h"
 #include "inputs/contour_inputs.h"
 #include "sweep_defaults.h"
@@ -71,21 +71,41 @@ int run(const SweepArgs& a) {
   setup.rtl_variant.reader_cps = a.reader_cps;
   setup.tape_dir = default_tape_dir(a.cache);
 
+  // Every output reserved before the sweep (a bad path fails now; a failure leaves none).
+  OutputSet outputs;
+  for (const std::string& path : a.inputs) outputs.input(path);
+  AtomicOutputFile* csv_out = outputs.add(a.csv);
+  AtomicOutputFile* markdown_out = outputs.add(a.markdown);
+  AtomicOutputFile* svg_out = outputs.add(a.svg);
+
   firststage::InputOptions io;
   io.airfoil_chord_mm = a.airfoil_chord_mm;
   for (const std::string& path : a.inputs) setup.inputs.push_back({path, firststage::read_contour(path, io)});
 
+  Progress line("sweep");
   ProgressCallback progress;
-  if (isatty(STDERR_FILENO)) {
-    progress = [](const SweepProgress& p) {
-      std::fprintf(stderr, "\r\033[Ksweep: %zu/%zu widths done; W=%u: %s", p.widths_done, p.widths_total, p.width,
-                   p.stage.c_str());
+  if (line.enabled()) {
+    progress = [&line](const SweepProgress& p) {
+      line.show(std::to_string(p.widths_done) + "/" + std::to_string(p.widths_total) + " widths done; W=" +
+                    std::to_string(p.width) + ": " + p.stage,
+                true);  // stages change seldom: each is shown
     };
   }
   const std::vector<SweepRow> rows = run_sweep(setup, progress);
-  if (progress) std::fprintf(stderr, "\r\033[K");
+  line.clear();
+  // Points (width, input) the first stage refused: each named once on stderr; a sweep in
+  // which nothing could be measured is a failed run (exit 1, no output).
+  size_t refused = 0, points = 0;
+  for (const SweepRow& r : rows)
+    for (const InputResult& in : r.inputs) {
+      ++points;
+      if (in.measured()) continue;
+      ++refused;
+      std::cerr << "sweep: W=" << r.width << ", " << in.input << ": refused: " << in.failure << "\n";
+    }
+  if (points > 0 && refused == points)
+    throw std::runtime_error("no width of --widths " + a.widths + " could tape any input (see above)");
 
-  // Every output in memory first, then each written atomically.
   const Table table = sweep_table(rows);
   const std::string csv = a.csv.empty() ? "" : to_csv(table);
   std::vector<std::string> input_columns = {"width"};
@@ -103,9 +123,10 @@ int run(const SweepArgs& a) {
     ctx.title = "ncinterp sweep --widths " + a.widths + " (" + std::to_string(a.inputs.size()) + " inputs)";
     svg = plot::render_svg(sweep_figure(rows, ctx));
   }
-  if (!a.csv.empty()) write_file_atomically(a.csv, csv);
-  if (!a.markdown.empty()) write_file_atomically(a.markdown, markdown);
-  if (!a.svg.empty()) write_file_atomically(a.svg, svg);
+  OutputSet::write(csv_out, csv);
+  OutputSet::write(markdown_out, markdown);
+  OutputSet::write(svg_out, svg);
+  outputs.commit();
   std::cout << to_markdown(table, kTapeColumns) << "\n" << to_markdown(table, kHardwareColumns);
   return 0;
 }

@@ -10,11 +10,12 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "atomic_file.h"
+#include "output_set.h"
 #include "command_registry.h"
 #include "firststage.h"
 #include "inputs/contour_inputs.h"
@@ -31,6 +32,7 @@ struct TapeArgs {
   std::string arcs = "chords", side = "left";
   FirstStageOptions options;
   double airfoil_chord_mm = 100.0;
+  double cut_z_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -46,12 +48,21 @@ int run(TapeArgs a) {
   o.arcs_circle = a.arcs == "circle";
   o.side_left = a.side == "left";
   validate_options(o);
+  // Every output reserved before the work: a bad output path fails now, and a failure
+  // later leaves none of them.
+  OutputSet outputs;
+  outputs.input(a.input);
+  AtomicOutputFile* tape_out = outputs.add(a.output);
+  AtomicOutputFile* report_out = outputs.add(a.report);
   const auto t0 = std::chrono::steady_clock::now();
   InputOptions io;
   io.airfoil_chord_mm = a.airfoil_chord_mm;
+  io.cut_z_mm = a.cut_z_mm;
   const Contour contour = read_contour(a.input, io);
+  for (const std::string& w : contour.warnings) std::cerr << w << "\n";
   const auto t_read = std::chrono::steady_clock::now();
   const FirstStageResult res = run_first_stage(contour, o);
+  for (const std::string& w : res.warnings) std::cerr << w << "\n";
   const double stage_s = seconds_since(t_read);
 
   // The tape, in memory, read back by the project's reader: what it reads must be what
@@ -71,8 +82,13 @@ int run(TapeArgs a) {
       measure_deviation(contour, res.contour_start, res.contour_moves, o.blu_mm, o.tol_mm / 4);
   const double measure_s = seconds_since(t_measure);
 
-  long lines = 0, arcs = 0, chords = 0;
-  for (const Move& m : res.moves) (m.kind == MoveKind::kLine ? lines : arcs) += 1;
+  // Blocks by kind, so the summary adds up: chord blocks of curves, straight blocks
+  // (programmed lines, rapids, the offset's joins), quadrant arc blocks.
+  long lines = 0, arcs = 0, chords = 0, chord_blocks = 0;
+  for (const Move& m : res.moves) {
+    (m.kind == MoveKind::kLine ? lines : arcs) += 1;
+    if (m.kind == MoveKind::kLine && m.chord) ++chord_blocks;
+  }
   nlohmann::json per_element = nlohmann::json::array();
   for (size_t i = 0; i < res.chords_per_element.size(); ++i) {
     chords += res.chords_per_element[i];
@@ -102,8 +118,12 @@ int run(TapeArgs a) {
       {"chords_per_element", per_element},
       {"max_deviation_mm", dev.max_mm},
       {"deviation",
-       {{"measure", "Hausdorff distance between the contour and its chord/arc path before the "
-                    "cutter offset, both sampled every tol/4"},
+       {{"measure", "sampled Hausdorff distance between the contour and its chord/arc path before "
+                    "the cutter offset: both sampled every step_mm, each sample measured to the "
+                    "polyline through the other's samples; an estimate (it may be off by the "
+                    "sagitta of one step, either way), not a bound: `ncinterp check` measures the "
+                    "pulse path exactly"},
+        {"step_mm", o.tol_mm / 4},
         {"path_to_contour_mm", dev.path_to_contour_mm},
         {"contour_to_path_mm", dev.contour_to_path_mm},
         {"samples", dev.samples}}},
@@ -111,6 +131,12 @@ int run(TapeArgs a) {
        {{"frames", frames.size()},
         {"bytes", is_frames ? frames.size() : text.size()},
         {"paper_m", frames.size() * 0.00254}}},  // 10 frames per inch
+      {"warnings", [&] {
+         nlohmann::json w = nlohmann::json::array();
+         for (const std::string& line : contour.warnings) w.push_back(line);
+         for (const std::string& line : res.warnings) w.push_back(line);
+         return w;
+       }()},
       {"planner",
        {{"chords", res.planner.chords},
         {"retries", res.planner.retries},
@@ -122,13 +148,18 @@ int run(TapeArgs a) {
   };
 
   // What was read back is what is written (write_tape_file would format it again).
-  write_file_atomically(a.output, is_frames ? frames : std::vector<uint8_t>(text.begin(), text.end()));
-  if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
-  std::printf("%s: %zu blocks (%ld chords, %ld arc blocks), %zu frames, max deviation %.4f mm "
-              "(tol %g mm)\n",
-              a.output.c_str(), program.blocks.size(), chords, arcs, frames.size(), dev.max_mm,
-              o.tol_mm);
-  if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
+  OutputSet::write(tape_out, is_frames ? std::string_view(reinterpret_cast<const char*>(frames.data()),
+                                                         frames.size())
+                                       : std::string_view(text));
+  if (report_out) OutputSet::write(report_out, report.dump(2) + "\n");
+  outputs.commit();
+  // The summary goes to stderr when the tape itself goes to standard output.
+  std::fprintf(a.output == "-" ? stderr : stdout,
+               "%s: %zu blocks (%ld chords, %ld straight, %ld arc blocks), %zu frames, max "
+               "deviation %.4f mm sampled every %g mm (tol %g mm; `check` measures exactly)\n",
+               a.output.c_str(), program.blocks.size(), chord_blocks, lines - chord_blocks, arcs,
+               frames.size(), dev.max_mm, o.tol_mm / 4, o.tol_mm);
+  if (!a.report.empty()) std::fprintf(a.output == "-" ? stderr : stdout, "report: %s\n", a.report.c_str());
   return 0;
 }
 
@@ -165,6 +196,9 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm")
       ->capture_default_str();
+  cmd->add_option("--cut-z", args->cut_z_mm,
+                  "G-code with Z: XY moves at or below this Z are the cut, the rest traverses, mm "
+                  "(default: the lowest Z of the program)");
   cmd->add_option("--report", args->report, "write a JSON report");
   cmd->callback([args] {
     try {

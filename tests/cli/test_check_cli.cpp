@@ -117,5 +117,24 @@ TEST_F(CheckCli, MissingTapeFileIsAnError) {
   EXPECT_NE(stderr_.find("nope.tape"), std::string::npos) << stderr_;
 }
 
+TEST_F(CheckCli, BadSvgPathFailsBeforeTheRunAndLeavesNoReport) {
+  const std::string tape = circle_tape();
+  const int code = run("check " + tape + " --contour " + example_path("circle_r50.json") +
+                       " --report " + path("r.json") + " --svg " + path("nodir/x.svg"));
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(stderr_.find("nodir/x.svg"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("check " + tape + " --report " + tape), 1);  // the report would replace the tape
+  EXPECT_NE(stderr_.find("is the input"), std::string::npos) << stderr_;
+  EXPECT_EQ(files(), std::vector<std::string>{"circle.tape"});
+}
+
+TEST_F(CheckCli, UsageErrorsExitOne) {
+  const std::string tape = circle_tape();
+  EXPECT_EQ(run("check " + tape + " --engine fpga"), 1);
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(run("check " + tape + " --width 40"), 1);
+  EXPECT_EQ(run("check"), 1);
+}
+
 }  // namespace
 }  // namespace ncinterp::regression

@@ -4,6 +4,7 @@
 // exact cycle, block and signal the scoreboard must name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "cli_test.h"
@@ -54,6 +55,15 @@ TEST_F(CosimCli, CycleLimitAndMissingTapeExitCleanly) {
   EXPECT_NE((stdout_ + stderr_).find("cycle limit (500 cycles)"), std::string::npos);
   EXPECT_EQ(cosim(path("missing.nc") + " --report " + path("missing.json")), 1);
   EXPECT_EQ(files(), std::vector<std::string>{}) << "a report or temporary file was left";
+}
+
+TEST_F(CosimCli, UsageAndOutputErrorsExitOneAndWriteNothing) {
+  EXPECT_EQ(cosim(gear_ + " --max-cycles many"), 1);
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(cosim(gear_ + kFast + " --report " + path("nodir/r.json")), 1);
+  EXPECT_NE(stderr_.find("nodir/r.json"), std::string::npos) << stderr_;
+  EXPECT_EQ(cosim(""), 1);
+  EXPECT_TRUE(files().empty());
 }
 
 }  // namespace

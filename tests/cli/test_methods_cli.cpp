@@ -98,4 +98,11 @@ TEST_F(MethodsCli, FailingRunWritesNothing) {
   EXPECT_TRUE(files().empty());
 }
 
+TEST_F(MethodsCli, UsageErrorsExitOneWithOneLine) {
+  EXPECT_EQ(run("methods --turns 5000"), 1);  // outside 2..1000
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(run("methods --no-such-option"), 1);
+  EXPECT_TRUE(files().empty());
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 // bad tape gives one error line, a non-zero exit, a complete error report and no VCD.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -67,7 +68,14 @@ TEST_F(PlayCli, BothEnginesPlayTheExampleIdentically) {
   ASSERT_TRUE(gtkw) << "waves/interp.gtkw missing";
   std::string line;
   int named = 0;
+  int filters = 0;
   while (std::getline(gtkw, line)) {
+    if (line[0] == '^') {  // "^N waves/NAME.gtkwf": a translate filter file, relative to the root
+      const std::string file = line.substr(line.find(' ') + 1);
+      EXPECT_TRUE(fs::exists(std::string(NCINTERP_EXAMPLES_DIR) + "/../" + file)) << line;
+      ++filters;
+      continue;
+    }
     if (line.empty() || line[0] == '@' || line[0] == '[' || line[0] == '*' || line[0] == '-') continue;
     const size_t bracket = line.find('[');
     const std::string name = line.substr(0, bracket);
@@ -77,6 +85,7 @@ TEST_F(PlayCli, BothEnginesPlayTheExampleIdentically) {
     ++named;
   }
   EXPECT_GT(named, 25);
+  EXPECT_EQ(filters, 3);  // frame_i as characters, decoder state and error code by name
 }
 
 // The bundled circle (four G03 quadrants of radius 50 mm) on both engines: the same report,
@@ -154,6 +163,23 @@ TEST_F(PlayCli, BadOptionsWriteNothing) {
   EXPECT_NE(play(kGear + " --engine fpga"), 0);
   EXPECT_NE(play(kGear + " --vcd-from 5"), 0);  // a window without --vcd
   EXPECT_TRUE(files().empty());
+}
+
+TEST_F(PlayCli, VcdThatIsADirectoryFailsBeforeTheRunAndLeavesNothing) {
+  fs::create_directory(path("waves"));
+  EXPECT_EQ(play(kGear + " --vcd " + path("waves") + " --report " + path("r.json")), 1);
+  EXPECT_NE(stderr_.find("is a directory"), std::string::npos) << stderr_;
+  EXPECT_EQ(stdout_, "");  // refused before the simulation, not after it
+  EXPECT_EQ(play(kGear + " --vcd " + path("nodir/w.vcd")), 1);
+  EXPECT_EQ(files(), std::vector<std::string>{"waves"});
+  EXPECT_TRUE(fs::is_empty(path("waves")));
+}
+
+TEST_F(PlayCli, UsageErrorsExitOne) {
+  EXPECT_EQ(play(kGear + " --engine fpga"), 1);
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(play(kGear + " --clock-hz fast"), 1);
+  EXPECT_EQ(play(""), 1);  // the tape is required
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -101,6 +102,27 @@ TEST_F(SweepCli, AToolNotOnPathIsStatedInItsColumns) {
   for (const char* c : {"cells", "flip_flops", "ice40_luts", "ice40_logic_cells", "fmax_mhz"})
     EXPECT_EQ(at(rows, 1, c), "yosys not on PATH") << c;
   EXPECT_EQ(at(rows, 1, "check"), "pass");  // the rest of the row is measured
+}
+
+TEST_F(SweepCli, RefusedPointsAreNamedOnceAndAllRefusedIsAFailedRun) {
+  // A 2 um circle is refused at every width (it lies within the tolerance of its start).
+  const std::string tiny = dir_.string() + ".tiny.nc";
+  std::ofstream(tiny) << "G21 G90\nG0 X0.002 Y0\nG3 X0.002 Y0 I-0.002 J0 F100\nM2\n";
+  EXPECT_EQ(run("sweep " + tiny + " --widths 2:3 --no-synth --no-rtl --csv " + path("s.csv")), 1);
+  std::filesystem::remove(tiny);
+  EXPECT_NE(stderr_.find("sweep: W=2, " + tiny + ": refused: "), std::string::npos) << stderr_;
+  EXPECT_NE(stderr_.find("sweep: W=3, " + tiny + ": refused: "), std::string::npos) << stderr_;
+  EXPECT_NE(stderr_.find("no width of --widths 2:3 could tape any input"), std::string::npos) << stderr_;
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(SweepCli, UsageAndOutputErrorsExitOneAndWriteNothing) {
+  EXPECT_EQ(run("sweep " + circle_), 1);  // --widths is required
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(run("sweep " + circle_ + " --widths 10 --no-synth --no-rtl --csv " + path("s.csv") +
+                " --svg " + path("nodir/s.svg")), 1);
+  EXPECT_NE(stderr_.find("nodir/s.svg"), std::string::npos) << stderr_;
+  EXPECT_TRUE(files().empty());
 }
 
 }  // namespace

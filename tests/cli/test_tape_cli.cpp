@@ -5,6 +5,9 @@
 // line naming the file and line, a non-zero exit and no output file.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -192,6 +195,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"arcr.nc", "G1 X0 Y0\nG2 X10 Y0 R2\n", "2: arc radius R2 is shorter"},
         BadCase{"num.dat", "AIRFOIL\n1.0 0.0\n0.5 0.05\n0.0 0.0\n0.5 abc\n1.0 0.0\n", "5: 'abc' is not a number"},
         BadCase{"lednicer.dat", "AIRFOIL\n3. 3.\n\n0 0\n0.5 0.05\n1 0\n\n0 0\n0.5 -0.05\n", "9: Lednicer header announces 3 + 3 points"},
+        BadCase{"huge.json", "{\"start\": [0, 0],\n \"segments\": [\n  {\"type\": \"line\", \"to\": [1e30, 0]}]}\n",
+                "3: coordinate out of range"},
+        BadCase{"far.nc", "G21 G90\nG1 X0 Y0 F100\nG1 X1000000000 Y0\n", "3: coordinate out of range"},
+        BadCase{"tiny.json", "{\"start\": [0, 0],\n \"segments\": [\n  {\"type\": \"line\", \"to\": [0.0002, 0]}]}\n",
+                "0: no cutting move of 1 BLU or more"},
+        BadCase{"c2um.nc", "G21 G90\nG0 X0.002 Y0\nG3 X0.002 Y0 I-0.002 J0 F100\nM2\n",
+                "3: full circle of radius 0.002 mm is within the tolerance"},
         BadCase{"contour.txt", "G1 X1\n", "0: unknown input kind '.txt'"},
         BadCase{"missing.json", nullptr, "0: cannot open the file"}),
     [](const auto& info) { return test_name_of(info.param.name); });
@@ -210,6 +220,114 @@ TEST_F(TapeCli, BadOptionsOneLineNoOutput) {
   EXPECT_NE(run("tape " + input + out + " --method 4"), 0);  // CLI11 refuses it
   EXPECT_NE(run("tape " + input), 0);                        // -o is required
   EXPECT_EQ(files(), std::vector<std::string>{});
+}
+
+// ---- outputs: never destroy an input, a link or a stream; all outputs or none ----------
+
+TEST_F(TapeCli, OutputThatIsTheInputIsRefusedAndTheInputKept) {
+  write("part.nc", slurp(kExamples + "/part.nc"));
+  const std::string before = slurp(path("part.nc"));
+  EXPECT_EQ(run("tape " + path("part.nc") + " -o " + path("part.nc")), 1);
+  EXPECT_NE(stderr_.find("is the input"), std::string::npos) << stderr_;
+  fs::create_symlink("part.nc", path("alias.nc"));
+  EXPECT_EQ(run("tape " + path("part.nc") + " -o " + path("x.tape") + " --report " + path("alias.nc")), 1);
+  EXPECT_EQ(slurp(path("part.nc")), before);
+  EXPECT_EQ(files(), (std::vector<std::string>{"alias.nc", "part.nc"}));
+}
+
+TEST_F(TapeCli, BadReportPathLeavesNoTape) {
+  const std::string input = kExamples + "/circle_r50.json";
+  EXPECT_EQ(run("tape " + input + " -o " + path("t.tape") + " --report " + path("nodir/r.json")), 1);
+  EXPECT_NE(stderr_.find("nodir/r.json"), std::string::npos) << stderr_;
+  fs::create_directory(path("adir"));
+  EXPECT_EQ(run("tape " + input + " -o " + path("t.tape") + " --report " + path("adir")), 1);
+  EXPECT_NE(stderr_.find("is a directory"), std::string::npos) << stderr_;
+  EXPECT_EQ(files(), std::vector<std::string>{"adir"});
+}
+
+TEST_F(TapeCli, SymlinkOutputWritesItsTargetAndStaysALink) {
+  const std::string input = kExamples + "/circle_r50.json";
+  write("real.tape", "old");
+  fs::create_symlink("real.tape", path("link.tape"));
+  ASSERT_EQ(run("tape " + input + " -o " + path("link.tape")), 0) << stderr_;
+  EXPECT_TRUE(fs::is_symlink(path("link.tape")));
+  EXPECT_GT(fs::file_size(path("real.tape")), 100u);
+  EXPECT_EQ(files(), (std::vector<std::string>{"link.tape", "real.tape"}));
+}
+
+TEST_F(TapeCli, DashAndDevNullAreStreamed) {
+  const std::string input = kExamples + "/circle_r50.json";
+  ASSERT_EQ(run("tape " + input + " -o - --report /dev/null"), 0) << stderr_;
+  EXPECT_EQ(stdout_.rfind("%", 0), 0u) << stdout_.substr(0, 80);  // the plain-text tape itself
+  EXPECT_NE(stderr_.find("blocks"), std::string::npos) << stderr_;  // the summary moved to stderr
+  struct stat st {};
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(TapeCli, CamPostsMakeATapeWithOneWarningLineAndPassTheCheck) {
+  for (const char* name : {"fusion360_profile.nc", "freecad_profile.ngc", "estlcam_profile.nc"}) {
+    SCOPED_TRACE(name);
+    const std::string input = kExamples + "/cam/" + name;
+    ASSERT_EQ(run("tape " + input + " -o " + path("t.tape")), 0) << stderr_;
+    EXPECT_EQ(stderr_.rfind(input + ": warning: ignored, no meaning for the 2-D contour: ", 0), 0u) << stderr_;
+    EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+    ASSERT_EQ(run("check " + path("t.tape") + " --contour " + input + " --reader-cps 100000"), 0)
+        << stdout_ << stderr_;
+  }
+}
+
+TEST_F(TapeCli, PointBeyondThePositionCounterIsRefusedBeforeTheWork) {
+  // Within the readers' 1e6 mm but beyond the 32-bit position counter at a 1 nm BLU
+  // (+-2147 mm): refused naming the line, before 5000 mm are split into 76 000 blocks.
+  write("pos.nc", "G21 G90\nG1 X0 Y0 F100\nG1 X5000 Y0\n");
+  EXPECT_EQ(run("tape " + path("pos.nc") + " -o " + path("t.tape") + " --blu 0.000001"), 1);
+  EXPECT_EQ(stderr_.rfind(path("pos.nc") + ":3: point (5000, 0) mm is outside the interpolator's position "
+                          "range +-2147.48 mm", 0), 0u) << stderr_;
+  EXPECT_EQ(files(), std::vector<std::string>{"pos.nc"});
+}
+
+TEST_F(TapeCli, LooseTolerancesAndNarrowWidthsWork) {
+  // Found in the trial: all of these stopped with "no chord within the tolerance fits".
+  const std::string circle = kExamples + "/circle_r50.json", naca = kExamples + "/naca2412_selig.dat";
+  for (const std::string& args : {circle + " --tol 40", naca + " --tol 25", circle + " --width 2",
+                                  circle + " --width 3", naca + " --width 3"}) {
+    SCOPED_TRACE(args);
+    EXPECT_EQ(run("tape " + args + " -o " + path("t.tape")), 0) << stderr_;
+    EXPECT_EQ(stderr_, "");
+  }
+}
+
+TEST_F(TapeCli, SummaryAndReportSayTheDeviationIsSampled) {
+  ASSERT_EQ(run("tape " + kExamples + "/circle_r50.json -o " + path("t.tape") + " --tol 10 --report " +
+                path("r.json")), 0) << stderr_;
+  EXPECT_NE(stdout_.find("max deviation"), std::string::npos) << stdout_;
+  EXPECT_NE(stdout_.find("sampled every 2.5 mm"), std::string::npos) << stdout_;
+  EXPECT_NE(stdout_.find(" straight, "), std::string::npos) << stdout_;  // every block kind named
+  const nlohmann::json r = json_of(path("r.json"));
+  EXPECT_EQ(r["deviation"]["step_mm"].get<double>(), 2.5);
+  EXPECT_NE(r["deviation"]["measure"].get<std::string>().find("not a bound"), std::string::npos);
+}
+
+TEST_F(TapeCli, AirfoilChordMustBePositive) {
+  const std::string input = kExamples + "/naca2412_selig.dat";
+  for (const char* chord : {"-100", "0"}) {
+    EXPECT_EQ(run("tape " + input + " -o " + path("t.tape") + " --airfoil-chord " + chord), 1);
+    EXPECT_EQ(stderr_, "ncinterp tape: --airfoil-chord must be > 0 mm (the airfoil's length)\n");
+  }
+  EXPECT_TRUE(files().empty());
+}
+
+TEST_F(TapeCli, UsageErrorsExitOneWithOneLine) {
+  const std::string input = kExamples + "/circle_r50.json";
+  EXPECT_EQ(run("tape " + input + " -o " + path("t.tape") + " --method 4"), 1);
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_EQ(run("tape " + input), 1);  // -o is required
+  EXPECT_EQ(run("tape " + input + " -o " + path("t.tape") + " --no-such-option"), 1);
+  EXPECT_EQ(run("tape " + input + " -o " + path("t.tape") + " --tol abc"), 1);
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+  EXPECT_TRUE(files().empty());
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 // The first stage pipeline (see firststage.h).
 #include "firststage.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "chords/chord_planner.h"
 #include "inputs/input_error.h"
+#include "measure/self_intersection.h"
 #include "offset/cutter_offset.h"
 #include "output/quadrant_arcs.h"
 
@@ -41,6 +44,65 @@ std::vector<Move> split_long_lines(GridPoint start, const std::vector<Move>& mov
     cur = m.to;
   }
   return out;
+}
+
+std::string fmt_mm(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Every point of the contour (and the cutter about it) must be a position the interpolator's
+// 32-bit position counters hold, in BLU. Checked before anything is scaled or allocated:
+// a coordinate of 1e30 would overflow the int64 grid, a 1e9 mm line would be split into
+// millions of blocks first. Names the input line.
+void check_position_range(const Contour& contour, const FirstStageOptions& o) {
+  const double limit_mm = static_cast<double>((int64_t{1} << (kPositionBits - 1)) - 1) * o.blu_mm;
+  const auto check = [&](Vec2 p, int line) {
+    const double reach = std::max(std::fabs(p.x), std::fabs(p.y)) + o.cutter_radius_mm;
+    if (!(reach <= limit_mm)) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "point (%g, %g) mm is outside the interpolator's position range +-%.6g mm "
+                    "(%d-bit counters at BLU %g mm)",
+                    p.x, p.y, limit_mm, kPositionBits, o.blu_mm);
+      throw InputError(contour.file, line, what);
+    }
+  };
+  check(contour.origin, contour.segments.empty() ? 0 : contour.segments.front().source_line);
+  for (const Segment& s : contour.segments) {
+    check(s.start(), s.source_line);
+    check(s.end(), s.source_line);
+  }
+}
+
+std::string element_name(const Contour& c, const Move& m) {
+  return m.element >= 0 && m.element < static_cast<int>(c.element_names.size())
+             ? c.element_names[m.element]
+             : std::string("a join of the offset");
+}
+
+// A crossing of the contour's own path, else of the cutter path: a warning, not an error
+// (docs/first-stage.md, "Self-crossing paths").
+void warn_self_crossing(const Contour& contour, const FirstStageOptions& o, FirstStageResult& res) {
+  const auto where = [&](const SelfCrossing& x) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.3f, %.3f) mm", x.at.x * o.blu_mm, x.at.y * o.blu_mm);
+    return std::string(buf);
+  };
+  if (const auto x = find_self_crossing(res.contour_start, res.contour_moves)) {
+    res.warnings.push_back(contour.file + ": warning: the contour crosses itself at " + where(*x) +
+                           " (" + element_name(contour, res.contour_moves[x->move_a]) + " and " +
+                           element_name(contour, res.contour_moves[x->move_b]) +
+                           "): the tape cuts it as drawn");
+    return;
+  }
+  if (o.cutter_radius_mm <= 0) return;
+  if (const auto x = find_self_crossing(res.start, res.moves))
+    res.warnings.push_back(contour.file + ": warning: the cutter path (radius " + fmt_mm(o.cutter_radius_mm) +
+                           " mm) crosses itself at " + where(*x) + " (near " +
+                           element_name(contour, res.moves[x->move_a]) +
+                           "): a detail of the part is narrower than the cutter");
 }
 
 }  // namespace
@@ -93,6 +155,7 @@ double move_length_mm(GridPoint from, const Move& m, double blu_mm) {
 
 FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions& o) {
   validate_options(o);
+  check_position_range(contour, o);
   const double to_blu = 1.0 / o.blu_mm;
   const int64_t max_inc = (int64_t{1} << o.width) - 1;
   FirstStageResult res;
@@ -102,7 +165,15 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
   res.chord_delta_mm = delta_blu * o.blu_mm;
   std::vector<Segment> segs;
   segs.reserve(contour.segments.size());
-  for (const Segment& s : contour.segments) segs.push_back(s.scaled(to_blu));
+  for (const Segment& s : contour.segments) {
+    // A full circle no wider than delta' lies within delta' of its own start: its chords
+    // would start and end at one point (nothing to cut). Refused with the reason, up front.
+    if (!s.rapid && s.is_arc() && std::fabs(s.sweep()) > 2 * M_PI - 1e-9 && s.radius() * to_blu <= delta_blu)
+      throw InputError(contour.file, s.source_line,
+                       "full circle of radius " + fmt_mm(s.radius()) + " mm is within the tolerance (delta' " +
+                           fmt_mm(delta_blu * o.blu_mm) + " mm) of its start: nothing to cut; use a smaller --tol");
+    segs.push_back(s.scaled(to_blu));
+  }
   res.chords_per_element.assign(contour.element_names.size(), 0);
 
   PlannerOptions popt;
@@ -156,6 +227,10 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
     i = j;
   }
   res.planner = planner.stats();
+  if (std::none_of(res.contour_moves.begin(), res.contour_moves.end(), [](const Move& m) { return !m.rapid; }))
+    throw InputError(contour.file, 0,
+                     "no cutting move of 1 BLU or more on the grid (BLU " + fmt_mm(o.blu_mm) +
+                         " mm): the contour is too short to cut");
   if (offset) {
     CutterOffsetOptions oo;
     oo.radius = o.cutter_radius_mm * to_blu;
@@ -169,6 +244,7 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
     res.moves = res.contour_moves;
   }
   res.moves = split_long_lines(res.start, res.moves, max_inc);
+  warn_self_crossing(contour, o, res);
   return res;
 }
 

@@ -12,6 +12,10 @@
 
 namespace ncinterp::firststage {
 
+// Width of the interpolator's position counters (PosWidth, docs/architecture.md): every
+// point of a contour must be within +-(2^31 - 1) BLU.
+constexpr int kPositionBits = 32;
+
 struct FirstStageOptions {
   int method = 3;              // 1 trial, 2 one-sided, 3 two-sided
   double tol_mm = 0.01;        // delta: how far the pulse path may be from the contour
@@ -47,6 +51,9 @@ struct FirstStageResult {
   PlannerStats planner;
   double chord_delta_mm = 0.0;   // the deviation the chords were held to (tol - budget ...)
   int frac_digits = 3;
+  // "FILE: warning: ..." lines: the contour's path or the cutter path crosses itself
+  // (measure/self_intersection.h). The commands print them on stderr.
+  std::vector<std::string> warnings;
 };
 
 // Checks the options (throws std::invalid_argument with a one-line reason).

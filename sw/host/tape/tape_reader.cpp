@@ -47,6 +47,11 @@ class Reader {
     ParseResult result;
     try {
       for (offset_ = 0; offset_ < frames.size(); ++offset_) frame(frames[offset_]);
+      // Without a '%' every frame is leader: the program never started, whatever M02 the
+      // leader holds.
+      if (state_ == State::kLeader)
+        fail(TapeError::kTruncatedTape, frames.size(),
+             "truncated tape: no '%' starts the program, so all of it is leader");
       if (state_ != State::kEnd)
         fail(TapeError::kTruncatedTape, frames.size(), "truncated tape: it ends before M02/M30");
     } catch (const Stop& stop) {

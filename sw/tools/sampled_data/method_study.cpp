@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "circle_runs.h"
@@ -115,10 +116,13 @@ Study run_study(const StudyConfig& config) {
   if (config.turns < 2) throw std::invalid_argument("--turns must be at least 2 (drift compares the first and last turn)");
   Study study;
   study.config = config;
+  const size_t total = std::size(kAllMethods) * config.radii_mm.size() * config.hs.size();
   for (Method m : kAllMethods)
     for (double radius : config.radii_mm)
-      for (double h : config.hs)
+      for (double h : config.hs) {
         study.rows.push_back(m == Method::kL1 ? line_row(radius, h, config) : circle_row(m, radius, h, config));
+        if (config.progress) config.progress(study.rows.size(), total);
+      }
   for (Method m : kAllMethods) study.summaries.push_back(summarise(m, study.rows));
   return study;
 }

@@ -12,6 +12,8 @@
 
 #include "method.h"
 #include "op_count.h"
+#include <functional>
+
 #include "order_fit.h"
 
 namespace ncinterp::sampled {
@@ -22,6 +24,8 @@ struct StudyConfig {
   int turns = 10;       // for the drift: at least 2
   int word_bits = 32;   // fixed-point word length B
   Starter starter = Starter::kK7;
+  // Called after each measured row with (rows done, rows in all): a progress display.
+  std::function<void(size_t, size_t)> progress;
 };
 
 // h from 1e-4 to 1e-1, four points per decade; radii 1, 10 and 100 mm.

@@ -17,20 +17,23 @@ std::string number(double v, const char* format) {
 
 std::string cell(const Measured& m, const char* format) { return m.value ? number(*m.value, format) : m.reason; }
 
-// A total or worst value over the inputs, or the reason there is none.
+// A total or worst value over the inputs, or "refused" when an input could not be taped
+// at this width (the reason is given once, in the check column).
+constexpr const char* kRefused = "refused";
+
 std::string total(const SweepRow& row, uint64_t InputResult::*field) {
   const std::optional<uint64_t> v = row.total(field);
-  return v ? std::to_string(*v) : row.missing_input();
+  return v ? std::to_string(*v) : kRefused;
 }
 
 std::string worst(const SweepRow& row, double InputResult::*field, const char* format) {
   const std::optional<double> v = row.worst(field);
-  return v ? number(*v, format) : row.missing_input();
+  return v ? number(*v, format) : kRefused;
 }
 
 std::string check_cell(const SweepRow& row) {
   const std::string missing = row.missing_input();
-  if (!missing.empty()) return missing;
+  if (!missing.empty()) return "refused: " + missing;
   for (const InputResult& in : row.inputs)
     if (in.violations)
       return "FAIL " + std::filesystem::path(in.input).filename().string() + ": " + std::to_string(in.violations) +
@@ -84,7 +87,7 @@ Table sweep_table(const std::vector<SweepRow>& rows) {
         cell(r.synth.ice40_luts, "%.0f"),
         cell(r.synth.ice40_logic_cells, "%.0f"),
         cell(r.synth.fmax_mhz, "%.2f")};
-    for (const InputResult& in : r.inputs) c.push_back(in.measured() ? std::to_string(in.blocks) : in.failure);
+    for (const InputResult& in : r.inputs) c.push_back(in.measured() ? std::to_string(in.blocks) : kRefused);
     t.rows.push_back(std::move(c));
   }
   return t;

@@ -66,7 +66,23 @@ bool ChordPlanner::round_end(const Span& span, GridPoint p, double ta, Vec2 e, d
 }
 
 bool ChordPlanner::leaves_room(const Span& span, GridPoint c, double tc, GridPoint end) const {
-  if (c == end || static_cast<double>(inf_norm(c, end)) >= 2.0 * opt_.delta + 2.0) return true;
+  const double near = 2.0 * opt_.delta + 2.0;
+  if (c == end || static_cast<double>(inf_norm(c, end)) >= near) return true;
+  // Near the end in the plane is not near it along the curve when the curve comes back
+  // (a closed circle, an airfoil's trailing edge, a delta as large as the part): then
+  // more chords follow anyway. Nor can a register narrower than the gap take it in one.
+  if (inf_norm(c, end) > opt_.max_inc) return true;
+  // (Twice the distance: more than any straight-ish end, whose length is at most sqrt(2)
+  // times the max-norm gap, so the usual case is decided as before.)
+  double along = 0.0;
+  constexpr int kSteps = 16;
+  Vec2 prev = to_vec(c);
+  for (int k = 1; k <= kSteps && along < 2.0 * near; ++k) {
+    const Vec2 next = span.point(tc + (span.t_end() - tc) * k / kSteps);
+    along += norm(next - prev);
+    prev = next;
+  }
+  if (along >= 2.0 * near) return true;
   return admissible(span, c, tc, end, span.t_end());
 }
 
@@ -85,7 +101,8 @@ bool ChordPlanner::fallback(const Span& span, GridPoint p, double ta, GridPoint 
   double lo = ta, hi = span.t_end();
   bool found = false;
   // Until the two ends are within half a BLU: finer steps round to the same grid points.
-  for (int it = 0; it < 60 && norm(span.point(hi) - span.point(lo)) > 0.5; ++it) {
+  // (At least one step: a closed span starts and ends at the same point.)
+  for (int it = 0; it < 60 && (it == 0 || norm(span.point(hi) - span.point(lo)) > 0.5); ++it) {
     const double mid = 0.5 * (lo + hi);
     Vec2 e = span.point(mid);
     // Respect the register width along the way.

@@ -20,6 +20,9 @@ struct Contour {
   std::vector<Segment> segments;    // mm
   // One name per input element (source_index), e.g. "line 12 (G2)", "segment 3 (table)".
   std::vector<std::string> element_names;
+  // What the reader ignored or doubts, one line each ("FILE: warning: ..."); printed by
+  // the commands on stderr.
+  std::vector<std::string> warnings;
   // Airfoil inputs: the trailing-edge points are corners, the rest of the spline is smooth.
 
   Vec2 end() const { return segments.empty() ? origin : segments.back().end(); }

@@ -1,6 +1,9 @@
 // Input kind by extension and file reading (see contour_inputs.h).
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <fstream>
 #include <sstream>
 
@@ -29,16 +32,40 @@ const char* input_kind_name(InputKind kind) {
   return "?";
 }
 
+namespace {
+
+// No machine has a table of a kilometre: a larger coordinate is a typo or garbage, refused
+// where it is read (the first stage then checks the interpolator's own position range).
+constexpr double kMaxCoordinateMm = 1e6;
+
+Contour checked(Contour c) {
+  const auto check = [&c](Vec2 p, int line) {
+    if (!(std::fabs(p.x) <= kMaxCoordinateMm && std::fabs(p.y) <= kMaxCoordinateMm))
+      throw InputError(c.file, line,
+                       "coordinate out of range: (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                           ") mm, the limit is +-1e6 mm");
+  };
+  for (const Segment& s : c.segments) {
+    check(s.start(), s.source_line);
+    check(s.end(), s.source_line);
+  }
+  return c;
+}
+
+}  // namespace
+
 Contour read_contour(const std::string& path, const InputOptions& options) {
   const InputKind kind = input_kind_of(path);
+  if (kind == InputKind::kAirfoil && !(options.airfoil_chord_mm > 0))
+    throw std::invalid_argument("--airfoil-chord must be > 0 mm (the airfoil's length)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open the file");
   std::ostringstream text;
   text << in.rdbuf();
   switch (kind) {
-    case InputKind::kJson: return parse_json_contour(text.str(), path);
-    case InputKind::kGcode: return parse_gcode(text.str(), path);
-    case InputKind::kAirfoil: return parse_airfoil(text.str(), path, options.airfoil_chord_mm);
+    case InputKind::kJson: return checked(parse_json_contour(text.str(), path));
+    case InputKind::kGcode: return checked(parse_gcode(text.str(), path, options.cut_z_mm));
+    case InputKind::kAirfoil: return checked(parse_airfoil(text.str(), path, options.airfoil_chord_mm));
   }
   throw InputError(path, 0, "unknown input kind");
 }

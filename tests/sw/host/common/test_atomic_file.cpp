@@ -1,6 +1,11 @@
 // AtomicOutputFile: the target appears only on commit, complete; nothing is left behind
-// when the writer gives up; an existing target survives a failed rewrite.
+// when the writer gives up; an existing target survives a failed rewrite; a symlink is
+// written through (it stays a link), a FIFO or a device is streamed, never replaced.
 #include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -87,6 +92,72 @@ TEST_F(AtomicFileTest, BytesHelperWritesBinary) {
   ASSERT_EQ(got.size(), 4u);
   EXPECT_EQ(static_cast<uint8_t>(got[1]), 0xA5);
   EXPECT_EQ(static_cast<uint8_t>(got[3]), 0xFF);
+}
+
+TEST_F(AtomicFileTest, SymlinkIsWrittenThroughAndStaysALink) {
+  write("target.tape", "old");
+  fs::create_symlink("target.tape", path("link.tape"));
+  ncinterp::write_file_atomically(path("link.tape"), std::string_view("new"));
+  EXPECT_TRUE(fs::is_symlink(path("link.tape")));
+  EXPECT_EQ(slurp(path("target.tape")), "new");
+  EXPECT_EQ(files(), (std::vector<std::string>{"link.tape", "target.tape"}));
+}
+
+TEST_F(AtomicFileTest, DanglingSymlinkCreatesItsTarget) {
+  fs::create_directory(path("sub"));
+  fs::create_symlink("sub/made.json", path("link.json"));
+  ncinterp::write_file_atomically(path("link.json"), std::string_view("{}"));
+  EXPECT_TRUE(fs::is_symlink(path("link.json")));
+  EXPECT_EQ(slurp(path("sub/made.json")), "{}");
+}
+
+TEST_F(AtomicFileTest, SymlinkLoopIsAClearError) {
+  fs::create_symlink("b", path("a"));
+  fs::create_symlink("a", path("b"));
+  EXPECT_THROW(ncinterp::AtomicOutputFile f(path("a")), std::runtime_error);
+}
+
+TEST_F(AtomicFileTest, CharacterDeviceIsStreamedNotReplaced) {
+  ncinterp::AtomicOutputFile f("/dev/null");
+  EXPECT_TRUE(f.streamed());
+  f.stream() << "discarded";
+  f.commit();
+  struct stat st {};
+  ASSERT_EQ(::stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode));
+}
+
+TEST_F(AtomicFileTest, FifoIsStreamedNotReplaced) {
+  ASSERT_EQ(::mkfifo(path("pipe").c_str(), 0600), 0);
+  // The reader opens non-blocking first, so the writer's open does not wait.
+  const int rfd = ::open(path("pipe").c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(rfd, 0);
+  {
+    ncinterp::AtomicOutputFile f(path("pipe"));
+    EXPECT_TRUE(f.streamed());
+    f.stream() << "through";
+    f.commit();
+  }
+  char buf[16] = {};
+  EXPECT_EQ(::read(rfd, buf, sizeof buf), 7);
+  ::close(rfd);
+  EXPECT_EQ(std::string(buf), "through");
+  struct stat st {};
+  ASSERT_EQ(::stat(path("pipe").c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_EQ(files(), std::vector<std::string>{"pipe"});
+}
+
+TEST_F(AtomicFileTest, DashIsStandardOutput) {
+  ncinterp::AtomicOutputFile f("-");
+  EXPECT_TRUE(f.streamed());
+  EXPECT_EQ(f.target_path(), "/dev/stdout");
+}
+
+TEST_F(AtomicFileTest, DirectoryIsRefused) {
+  fs::create_directory(path("d"));
+  EXPECT_THROW(ncinterp::AtomicOutputFile f(path("d")), std::runtime_error);
+  EXPECT_EQ(files(), std::vector<std::string>{"d"});
 }
 
 }  // namespace

@@ -138,6 +138,15 @@ TEST(TapeErrors, BadArcsNameTheirRuleBlockAndLf) {
   EXPECT_NO_THROW(parse_frames(add_parity(good), Format{}));
 }
 
+TEST(TapeErrors, TapeWithoutPercentSaysSoNotThatM02IsMissing) {
+  // M02 is there, but without '%' the whole tape is leader.
+  const ParseResult r = parse_frames_partial(add_parity("N1 G01 X1.000 F1.000\nN2 M02\n"), Format{});
+  ASSERT_TRUE(r.error.has_value());
+  EXPECT_EQ(r.error->code, 7u);
+  EXPECT_NE(r.error->message.find("no '%'"), std::string::npos) << r.error->message;
+  EXPECT_EQ(r.error->message.find("before M02"), std::string::npos) << r.error->message;
+}
+
 TEST(TapeErrors, PartialParseKeepsTheGoodBlocks) {
   const std::string text = kHead + "N2 G01 X3.000 F1.000\nN3 X1.000 Q\nM02\n%\n";
   const ParseResult r = parse_frames_partial(add_parity(text), Format{});
