@@ -11,6 +11,7 @@ packages=(
   libplplot-dev                       # SVG plots (PLplot's svg driver)
   yosys nextpnr-ice40 fpga-icestorm   # synthesis, area and Fmax
   iverilog                            # reference simulator for the benchmark
+  parallel                            # ncinterp sweep's local runner (GNU parallel)
 )
 missing=()
 for p in "${packages[@]}"; do

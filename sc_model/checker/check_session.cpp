@@ -93,7 +93,8 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   out.program = tape::parse_frames(frames, setup.format);
   std::vector<ProgrammedBlock> blocks = lay_out(out.program);
 
-  const InterpConfig cfg = interp_config(setup.format, setup.clock_hz);
+  InterpConfig cfg = interp_config(setup.format, setup.clock_hz);
+  cfg.pos_width = setup.pos_width;
   if (contour) {
     ReferenceOptions ro;
     ro.blu_mm = out.blu_mm;
