@@ -124,13 +124,6 @@ std::vector<GridAxis> grid_axes(const SweepArgs& a) {
     if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param: '" + p + "' is not NAME=VALUES");
     axis(p.substr(0, eq).c_str(), "--param " + p.substr(0, eq), p.substr(eq + 1), 0, 1e15, "");
   }
-  for (const GridAxis& g : axes)
-    if (g.name == kBlu)
-      for (double v : g.values) {
-        firststage::FirstStageOptions o;
-        o.blu_mm = v;
-        firststage::validate_options(o);  // 10^-k mm
-      }
   if (axes.empty()) throw std::invalid_argument("no grid: give --widths (and any of the other axes)");
   return axes;
 }
