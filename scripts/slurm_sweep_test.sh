@@ -31,7 +31,8 @@ trap cleanup EXIT
 mkdir -p "$work/munge" && chmod 700 "$work/munge"
 mungekey --create --keyfile="$work/munge/munge.key" >/dev/null 2>&1 || mungekey -c -k "$work/munge/munge.key"
 munged --foreground --force --key-file="$work/munge/munge.key" --socket="$work/munge/munge.socket" \
-       --pid-file="$work/munge/munged.pid" --log-file="$work/munge/munged.log" --seed-file="$work/munge/seed" &
+       --pid-file="$work/munge/munged.pid" --log-file="$work/munge/munged.log" --seed-file="$work/munge/seed" \
+       >"$work/munge/munged.out" 2>&1 &
 pids+=($!)
 
 cpus=$(nproc)
