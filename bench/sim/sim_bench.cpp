@@ -53,7 +53,7 @@ struct Options {
   uint64_t vcd_cycles = 1'000'000;  // cycles traced to a VCD
   uint64_t icarus_cycles = 2'000'000;
   std::string ncinterp = NCINTERP_EXE;
-  std::string rtl_dir = NCINTERP_RTL_DIR;
+  std::string rtl_sources = NCINTERP_RTL_SOURCES;  // space-separated, package first
   std::string tb = NCINTERP_TB;
   bool skip_icarus = false, skip_system = false;
   std::vector<std::string> engines;  // empty: all
@@ -171,7 +171,7 @@ Row measure_icarus(const Options& o, const std::vector<uint8_t>& frames, uint64_
     }
   }
   std::string log;
-  const std::string compile = "iverilog -g2012 -o " + vvp.string() + " " + o.rtl_dir + "/*.sv " +
+  const std::string compile = "iverilog -g2012 -o " + vvp.string() + " " + o.rtl_sources + " " +
                               o.tb + " 2>&1";
   if (run_command(compile, &log) != 0) throw std::runtime_error("iverilog failed:\n" + log);
   std::ostringstream cmd;

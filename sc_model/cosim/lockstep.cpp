@@ -20,21 +20,10 @@ Mismatch first_difference(const InterpOutputs& g, const InterpOutputs& r) {
     int64_t (*get)(const InterpOutputs&);
   };
   static const Field fields[] = {
-      {"frame_ready_o", [](const InterpOutputs& o) -> int64_t { return o.frame_ready; }},
-      {"step_x_o", [](const InterpOutputs& o) -> int64_t { return o.step_x; }},
-      {"dir_x_o", [](const InterpOutputs& o) -> int64_t { return o.dir_x; }},
-      {"step_y_o", [](const InterpOutputs& o) -> int64_t { return o.step_y; }},
-      {"dir_y_o", [](const InterpOutputs& o) -> int64_t { return o.dir_y; }},
-      {"pos_x_o", [](const InterpOutputs& o) -> int64_t { return o.pos_x; }},
-      {"pos_y_o", [](const InterpOutputs& o) -> int64_t { return o.pos_y; }},
-      {"block_n_o", [](const InterpOutputs& o) -> int64_t { return o.block_n; }},
-      {"busy_o", [](const InterpOutputs& o) -> int64_t { return o.busy; }},
-      {"done_o", [](const InterpOutputs& o) -> int64_t { return o.done; }},
-      {"error_o", [](const InterpOutputs& o) -> int64_t { return o.error; }},
-      {"error_code_o", [](const InterpOutputs& o) -> int64_t { return o.error_code; }},
-      {"error_block_o", [](const InterpOutputs& o) -> int64_t { return o.error_block; }},
-      {"error_offset_o", [](const InterpOutputs& o) -> int64_t { return o.error_offset; }},
-      {"feed_saturated_o", [](const InterpOutputs& o) -> int64_t { return o.feed_saturated; }},
+#define INTERP_OUTPUT(name, kind, width) \
+  {#name "_o", [](const InterpOutputs& o) -> int64_t { return o.name; }},
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
   };
   for (const Field& f : fields) {
     if (f.get(g) != f.get(r)) {

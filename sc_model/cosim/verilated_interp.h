@@ -20,6 +20,9 @@ class VerilatedInterp {
   // model's VCDs (docs/waves.md), so one GTKWave save file opens both.
   static constexpr const char* kScope = "SystemC.interp";
 
+  // PortPosition::from_rtl sign-extends from the port's C type (IData).
+  static_assert(InterpConfig{}.pos_width == 32, "PosWidth must match the verilated C type");
+
   // The RTL is verilated with its default parameters: cfg must have them (only
   // feed_modulus, an input port, is free). A width variant (sw/tools/sweep/rtl_variant/: the
   // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W.
@@ -31,10 +34,7 @@ class VerilatedInterp {
 #ifdef NCINTERP_RTL_INC_WIDTH
     rtl.inc_width = NCINTERP_RTL_INC_WIDTH;
 #endif
-    if (cfg.inc_width != rtl.inc_width || cfg.frac_digits != rtl.frac_digits ||
-        cfg.feed_width != rtl.feed_width || cfg.feed_frac_digits != rtl.feed_frac_digits ||
-        cfg.pos_width != rtl.pos_width || cfg.seq_width != rtl.seq_width ||
-        cfg.offset_width != rtl.offset_width || cfg.modulus_width != rtl.modulus_width)
+    if (!cfg.same_parameters(rtl))
       throw std::invalid_argument(
           "the verilated RTL is built with the default parameters; the configuration differs");
     reset();
@@ -66,39 +66,24 @@ class VerilatedInterp {
 
   bool frame_ready() const { return model_->frame_ready_o; }
 
+  // The outputs (interp_outputs.def), port by port.
   InterpOutputs outputs() const {
     const Model& m = *model_;
     InterpOutputs o;
-    o.frame_ready = m.frame_ready_o;
-    o.step_x = m.step_x_o;
-    o.dir_x = m.dir_x_o;
-    o.step_y = m.step_y_o;
-    o.dir_y = m.dir_y_o;
-    o.pos_x = static_cast<int32_t>(m.pos_x_o);  // PosWidth = 32: sign-extend
-    o.pos_y = static_cast<int32_t>(m.pos_y_o);
-    o.block_n = m.block_n_o;
-    o.busy = m.busy_o;
-    o.done = m.done_o;
-    o.error = m.error_o;
-    o.error_code = m.error_code_o;
-    o.error_block = m.error_block_o;
-    o.error_offset = m.error_offset_o;
-    o.feed_saturated = m.feed_saturated_o;
+#define INTERP_OUTPUT(name, kind, width) o.name = Port##kind::from_rtl(m.name##_o);
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
     return o;
   }
 
   // Field-by-field equality with a golden output struct, without building one.
   bool same_as(const InterpOutputs& g) const {
     const Model& m = *model_;
-    return g.step_x == static_cast<bool>(m.step_x_o) && g.step_y == static_cast<bool>(m.step_y_o) &&
-           g.frame_ready == static_cast<bool>(m.frame_ready_o) &&
-           g.dir_x == static_cast<bool>(m.dir_x_o) && g.dir_y == static_cast<bool>(m.dir_y_o) &&
-           g.pos_x == static_cast<int32_t>(m.pos_x_o) && g.pos_y == static_cast<int32_t>(m.pos_y_o) &&
-           g.block_n == m.block_n_o && g.busy == static_cast<bool>(m.busy_o) &&
-           g.done == static_cast<bool>(m.done_o) && g.error == static_cast<bool>(m.error_o) &&
-           g.error_code == m.error_code_o && g.error_block == m.error_block_o &&
-           g.error_offset == m.error_offset_o &&
-           g.feed_saturated == static_cast<bool>(m.feed_saturated_o);
+    return true
+#define INTERP_OUTPUT(name, kind, width) &&g.name == Port##kind::from_rtl(m.name##_o)
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
+        ;
   }
 
   Model& model() { return *model_; }

@@ -2,10 +2,15 @@
 // wrappers, the SystemC system model and the lock-step scoreboard.
 // Idea: the RTL (rtl/interp_top.sv) and GoldenInterp have exactly these inputs and outputs;
 // the field names follow the RTL port names without the _i/_o suffix, so a mismatch
-// report and a VCD name the same signal in both implementations. docs/architecture.md
+// report and a VCD name the same signal in both implementations. The outputs are listed
+// once, in interp_outputs.def, and every list of them is expanded from it; the error codes
+// (TapeError) are the tape format's, in sw/host/tape/tape_errors.def. docs/architecture.md
 // explains each field.
 #pragma once
 #include <cstdint>
+#include <type_traits>
+
+#include "tape_errors.h"
 
 namespace ncinterp {
 
@@ -23,6 +28,15 @@ struct InterpConfig {
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
 
+  // Same elaboration parameters (everything but feed_modulus, a port): what a verilated
+  // model, built with fixed parameters, requires of a configuration.
+  bool same_parameters(const InterpConfig& o) const {
+    return inc_width == o.inc_width && frac_digits == o.frac_digits &&
+           feed_width == o.feed_width && feed_frac_digits == o.feed_frac_digits &&
+           pos_width == o.pos_width && seq_width == o.seq_width &&
+           offset_width == o.offset_width && modulus_width == o.modulus_width;
+  }
+
   static uint64_t feed_modulus_for(double clock_hz, unsigned feed_frac_digits) {
     uint64_t scale = 1;
     for (unsigned i = 0; i < feed_frac_digits; ++i) scale *= 10;
@@ -36,47 +50,75 @@ struct InterpInputs {
   bool tape_end = false;
 };
 
-enum class TapeError : uint8_t {
-  kNone = 0,
-  kParity = 1,
-  kUnknownCharacter = 2,
-  kMalformedNumber = 3,
-  kValueTooWide = 4,
-  kMissingEndOfBlock = 5,
-  kUnsupportedCode = 6,
-  kTruncatedTape = 7,
-  kBlockAfterEnd = 8,
-  kMissingFeed = 9,
-  kArcCrossesQuadrant = 10,
-  kArcEndpointOffCircle = 11,
-  kArcZeroRadius = 12,
+// What each kind of output (interp_outputs.def) is in C++:
+//   Value      the InterpOutputs field;
+//   Signal     the SystemC signal/port type, as Verilator's SystemC model declares the port
+//              (bool for one bit, uint32_t for 2..32 bits);
+//   to_signal / from_signal  between the two, for a port of `width` bits;
+//   from_rtl   from a port of the verilated C++ model (CData, IData, ...);
+//   kOneBit    traced without a width (sc_trace of a bool).
+struct PortFlag {
+  using Value = bool;
+  using Signal = bool;
+  static constexpr bool kOneBit = true;
+  static Signal to_signal(Value v, unsigned) { return v; }
+  static Value from_signal(Signal s, unsigned) { return s; }
+  template <class P>
+  static Value from_rtl(P p) { return static_cast<bool>(p); }
 };
 
-const char* tape_error_message(TapeError code);
+struct PortCount {
+  using Value = uint32_t;
+  using Signal = uint32_t;
+  static constexpr bool kOneBit = false;
+  static Signal to_signal(Value v, unsigned) { return v; }
+  static Value from_signal(Signal s, unsigned) { return s; }
+  template <class P>
+  static Value from_rtl(P p) { return static_cast<Value>(p); }
+};
 
+struct PortCode {  // an error code (TapeError)
+  using Value = uint8_t;
+  using Signal = uint32_t;
+  static constexpr bool kOneBit = false;
+  static Signal to_signal(Value v, unsigned) { return v; }
+  static Value from_signal(Signal s, unsigned) { return static_cast<Value>(s); }
+  template <class P>
+  static Value from_rtl(P p) { return static_cast<Value>(p); }
+};
+
+struct PortPosition {  // two's complement in `width` bits, sign-extended in C++
+  using Value = int64_t;
+  using Signal = uint32_t;
+  static constexpr bool kOneBit = false;
+  static Signal to_signal(Value v, unsigned width) {
+    const uint64_t mask = width >= 64 ? ~0ull : (1ull << width) - 1;
+    return static_cast<Signal>(static_cast<uint64_t>(v) & mask);
+  }
+  static Value from_signal(Signal s, unsigned width) {
+    if (width >= 64) return static_cast<Value>(s);
+    const uint64_t sign = 1ull << (width - 1);
+    const uint64_t value = s & ((1ull << width) - 1);
+    return static_cast<Value>((value ^ sign) - sign);
+  }
+  // The verilated port's C type is as wide as the port (VerilatedInterp checks PosWidth),
+  // so its signed twin sign-extends: the cosim's hot path needs no shifts.
+  template <class P>
+  static Value from_rtl(P p) { return static_cast<std::make_signed_t<P>>(p); }
+};
+
+// The outputs (interp_outputs.def), field for field the RTL's ports without "_o".
 struct InterpOutputs {
-  bool frame_ready = false;
-  bool step_x = false;
-  bool dir_x = false;
-  bool step_y = false;
-  bool dir_y = false;
-  int64_t pos_x = 0;  // sign-extended from pos_width bits
-  int64_t pos_y = 0;
-  uint32_t block_n = 0;
-  bool busy = false;
-  bool done = false;
-  bool error = false;
-  uint8_t error_code = 0;
-  uint32_t error_block = 0;
-  uint32_t error_offset = 0;
-  bool feed_saturated = false;
+#define INTERP_OUTPUT(name, kind, width) Port##kind::Value name = {};
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
 
   bool operator==(const InterpOutputs& o) const {
-    return frame_ready == o.frame_ready && step_x == o.step_x && dir_x == o.dir_x &&
-           step_y == o.step_y && dir_y == o.dir_y && pos_x == o.pos_x && pos_y == o.pos_y &&
-           block_n == o.block_n && busy == o.busy && done == o.done && error == o.error &&
-           error_code == o.error_code && error_block == o.error_block &&
-           error_offset == o.error_offset && feed_saturated == o.feed_saturated;
+    return true
+#define INTERP_OUTPUT(name, kind, width) &&name == o.name
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
+        ;
   }
   bool operator!=(const InterpOutputs& o) const { return !(*this == o); }
 };

@@ -32,21 +32,11 @@ class GoldenEngine : public Engine {
     trace(s_.frame_i, p + "frame_i", 8);
     sc_core::sc_trace(file_, s_.frame_valid_i, p + "frame_valid_i");
     sc_core::sc_trace(file_, s_.tape_end_i, p + "tape_end_i");
-    sc_core::sc_trace(file_, s_.frame_ready_o, p + "frame_ready_o");
-    sc_core::sc_trace(file_, s_.step_x_o, p + "step_x_o");
-    sc_core::sc_trace(file_, s_.dir_x_o, p + "dir_x_o");
-    sc_core::sc_trace(file_, s_.step_y_o, p + "step_y_o");
-    sc_core::sc_trace(file_, s_.dir_y_o, p + "dir_y_o");
-    trace(s_.pos_x_o, p + "pos_x_o", cfg_.pos_width);
-    trace(s_.pos_y_o, p + "pos_y_o", cfg_.pos_width);
-    trace(s_.block_n_o, p + "block_n_o", cfg_.seq_width);
-    sc_core::sc_trace(file_, s_.busy_o, p + "busy_o");
-    sc_core::sc_trace(file_, s_.done_o, p + "done_o");
-    sc_core::sc_trace(file_, s_.error_o, p + "error_o");
-    trace(s_.error_code_o, p + "error_code_o", 4);
-    trace(s_.error_block_o, p + "error_block_o", cfg_.seq_width);
-    trace(s_.error_offset_o, p + "error_offset_o", cfg_.offset_width);
-    sc_core::sc_trace(file_, s_.feed_saturated_o, p + "feed_saturated_o");
+    const InterpConfig& cfg = cfg_;
+#define INTERP_OUTPUT(name, kind, width) \
+  trace_output<Port##kind>(s_.name##_o, p + #name "_o", width);
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
   }
 
   void close_vcd() override {
@@ -60,6 +50,15 @@ class GoldenEngine : public Engine {
   template <class T>
   void trace(const sc_core::sc_signal<T>& sig, const std::string& name, unsigned width) {
     sc_core::sc_trace(file_, sig.read(), name, static_cast<int>(width));
+  }
+
+  // An output (interp_outputs.def): one bit as SystemC traces a bool, else with its width.
+  template <class Kind, class T>
+  void trace_output(const sc_core::sc_signal<T>& sig, const std::string& name, unsigned width) {
+    if constexpr (Kind::kOneBit)
+      sc_core::sc_trace(file_, sig, name);
+    else
+      trace(sig, name, width);
   }
 
   InterpConfig cfg_;

@@ -33,23 +33,10 @@ void GoldenInterpModule::edge() {
 
 void GoldenInterpModule::write_outputs() {
   const InterpOutputs& o = model_.outputs();
-  const unsigned pos_bits = model_.config().pos_width;
-  const uint64_t pos_mask = pos_bits >= 64 ? ~0ull : (1ull << pos_bits) - 1;
-  frame_ready_o.write(o.frame_ready);
-  step_x_o.write(o.step_x);
-  dir_x_o.write(o.dir_x);
-  step_y_o.write(o.step_y);
-  dir_y_o.write(o.dir_y);
-  pos_x_o.write(static_cast<uint32_t>(static_cast<uint64_t>(o.pos_x) & pos_mask));
-  pos_y_o.write(static_cast<uint32_t>(static_cast<uint64_t>(o.pos_y) & pos_mask));
-  block_n_o.write(o.block_n);
-  busy_o.write(o.busy);
-  done_o.write(o.done);
-  error_o.write(o.error);
-  error_code_o.write(o.error_code);
-  error_block_o.write(o.error_block);
-  error_offset_o.write(o.error_offset);
-  feed_saturated_o.write(o.feed_saturated);
+  const InterpConfig& cfg = model_.config();
+#define INTERP_OUTPUT(name, kind, width) name##_o.write(Port##kind::to_signal(o.name, width));
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
 }
 
 }  // namespace ncinterp::system

@@ -60,11 +60,7 @@ std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg,
                                         sc_core::sc_signal_in_if<bool>& clk,
                                         InterpSignals& signals, bool with_trace) {
   // The verilated model has the RTL's default parameters: the configuration must match.
-  const InterpConfig defaults;
-  if (cfg.inc_width != defaults.inc_width || cfg.frac_digits != defaults.frac_digits ||
-      cfg.feed_width != defaults.feed_width || cfg.feed_frac_digits != defaults.feed_frac_digits ||
-      cfg.pos_width != defaults.pos_width || cfg.seq_width != defaults.seq_width ||
-      cfg.offset_width != defaults.offset_width || cfg.modulus_width != defaults.modulus_width)
+  if (!cfg.same_parameters(InterpConfig{}))
     throw std::runtime_error("the verilated RTL has the default widths only");
   return std::make_unique<RtlEngine>(clk, signals, with_trace);
 }

@@ -7,13 +7,6 @@ namespace {
 
 sc_core::sc_time period_of(double clock_hz) { return sc_core::sc_time(1.0 / clock_hz, sc_core::SC_SEC); }
 
-int64_t sign_extend(uint64_t value, unsigned bits) {
-  if (bits >= 64) return static_cast<int64_t>(value);
-  const uint64_t sign = 1ull << (bits - 1);
-  value &= (1ull << bits) - 1;
-  return static_cast<int64_t>((value ^ sign) - sign);
-}
-
 }  // namespace
 
 SystemTop::SystemTop(sc_core::sc_module_name name, const SystemSetup& setup, FrameSource source,
@@ -57,23 +50,12 @@ void SystemTop::finish() {
 }
 
 InterpOutputs SystemTop::sample() const {
-  const InterpConfig& c = setup_.config;
+  const InterpConfig& cfg = setup_.config;
   InterpOutputs o;
-  o.frame_ready = signals_.frame_ready_o.read();
-  o.step_x = signals_.step_x_o.read();
-  o.dir_x = signals_.dir_x_o.read();
-  o.step_y = signals_.step_y_o.read();
-  o.dir_y = signals_.dir_y_o.read();
-  o.pos_x = sign_extend(signals_.pos_x_o.read(), c.pos_width);
-  o.pos_y = sign_extend(signals_.pos_y_o.read(), c.pos_width);
-  o.block_n = signals_.block_n_o.read();
-  o.busy = signals_.busy_o.read();
-  o.done = signals_.done_o.read();
-  o.error = signals_.error_o.read();
-  o.error_code = static_cast<uint8_t>(signals_.error_code_o.read());
-  o.error_block = signals_.error_block_o.read();
-  o.error_offset = signals_.error_offset_o.read();
-  o.feed_saturated = signals_.feed_saturated_o.read();
+#define INTERP_OUTPUT(name, kind, width) \
+  o.name = Port##kind::from_signal(signals_.name##_o.read(), width);
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
   return o;
 }
 

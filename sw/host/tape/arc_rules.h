@@ -12,10 +12,10 @@
 namespace ncinterp::tape {
 
 // The first rule an arc block breaks, in the decoder's order, as the interpolator's error
-// code (12 zero radius, 10 not inside one quadrant, 4 end beyond the register, 11 end off
-// the circle) and a message; code 0 for a good arc.
+// code (zero radius, not inside one quadrant, end beyond the register, end off the circle)
+// and a message; TapeError::kNone for a good arc.
 struct ArcRuleBroken {
-  unsigned code = 0;
+  TapeError code = TapeError::kNone;
   std::string message;
 };
 ArcRuleBroken broken_arc_rule(const Block& b, uint64_t inc_max);

@@ -11,9 +11,16 @@
 #include <string_view>
 #include <vector>
 
+#include "tape_errors.h"
+
 namespace ncinterp::tape {
 
-enum class Motion : uint8_t { kLine = 1, kArcCw = 2, kArcCcw = 3 };  // G01, G02, G03
+// G01, G02, G03 (tape_motions.def: the code is the G number).
+enum class Motion : uint8_t {
+#define TAPE_MOTION(name, code, word) k##name = code,
+#include "tape_motions.def"
+#undef TAPE_MOTION
+};
 
 struct Block {
   uint32_t n = 0;               // sequence number
@@ -43,7 +50,7 @@ struct TapeErrorInfo {
   uint32_t block = 0;
   uint64_t offset = 0;
   std::string message;
-  unsigned code = 0;  // the interpolator's error code (ncinterp::TapeError, interp_ports.h)
+  unsigned code = 0;  // the interpolator's error code (ncinterp::TapeError, tape_errors.h)
 };
 
 class TapeFormatError : public std::runtime_error {

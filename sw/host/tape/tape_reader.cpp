@@ -18,19 +18,6 @@ namespace ncinterp::tape {
 
 namespace {
 
-// Error codes: the interpolator's (ncinterp::TapeError in sc_model/golden/interp_ports.h).
-enum Code : unsigned {
-  kParity = 1,
-  kUnknownCharacter = 2,
-  kMalformedNumber = 3,
-  kValueTooWide = 4,
-  kMissingEndOfBlock = 5,
-  kUnsupportedCode = 6,
-  kTruncatedTape = 7,
-  kBlockAfterEnd = 8,
-  kMissingFeed = 9,
-};
-
 uint64_t max_for_width(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
 
 std::string printable(uint8_t frame) {
@@ -61,7 +48,7 @@ class Reader {
     try {
       for (offset_ = 0; offset_ < frames.size(); ++offset_) frame(frames[offset_]);
       if (state_ != State::kEnd)
-        fail(kTruncatedTape, frames.size(), "truncated tape: it ends before M02/M30");
+        fail(TapeError::kTruncatedTape, frames.size(), "truncated tape: it ends before M02/M30");
     } catch (const Stop& stop) {
       result.error = stop.info;
     }
@@ -74,12 +61,12 @@ class Reader {
   enum class Word { kNone, kN, kG, kM, kX, kY, kI, kJ, kF };
   enum class Part { kStart, kSign, kInteger, kFraction };  // how far the number has come
 
-  [[noreturn]] void fail(unsigned code, uint64_t offset, std::string message) {
-    throw Stop{TapeErrorInfo{n_, offset, std::move(message), code}};
+  [[noreturn]] void fail(TapeError code, uint64_t offset, std::string message) {
+    throw Stop{TapeErrorInfo{n_, offset, std::move(message), static_cast<unsigned>(code)}};
   }
 
   void frame(uint8_t f) {
-    if (!has_even_parity(f)) fail(kParity, offset_, "parity error: " + printable(f));
+    if (!has_even_parity(f)) fail(TapeError::kParity, offset_, "parity error: " + printable(f));
     const char c = static_cast<char>(f & 0x7f);
     switch (state_) {
       case State::kLeader:  // everything before '%' is leader
@@ -90,7 +77,7 @@ class Reader {
         break;
       case State::kEnd:
         if (!(c == '%' || c == '\0' || c == '\r' || c == '\n' || c == ' '))
-          fail(kBlockAfterEnd, offset_, "block after end of program: " + printable(f));
+          fail(TapeError::kBlockAfterEnd, offset_, "block after end of program: " + printable(f));
         break;
       case State::kBody:
         body(c, f);
@@ -107,7 +94,8 @@ class Reader {
     switch (c) {
       case 'N':
         if (n_in_block_)
-          fail(kMissingEndOfBlock, offset_, "missing end of block: a second N in one block");
+          fail(TapeError::kMissingEndOfBlock, offset_,
+               "missing end of block: a second N in one block");
         n_in_block_ = true;
         return begin_word(Word::kN, c);
       case 'G': return begin_word(Word::kG, c);
@@ -121,10 +109,11 @@ class Reader {
       case '(': state_ = State::kComment; return;
       case '%':
         if (block_has_word_)
-          fail(kMissingEndOfBlock, offset_, "missing end of block before '%'");
-        fail(kTruncatedTape, offset_, "truncated tape: '%' before M02/M30");
+          fail(TapeError::kMissingEndOfBlock, offset_, "missing end of block before '%'");
+        fail(TapeError::kTruncatedTape, offset_, "truncated tape: '%' before M02/M30");
       default:
-        fail(kUnknownCharacter, offset_, "unknown address letter or character " + printable(f));
+        fail(TapeError::kUnknownCharacter, offset_,
+             "unknown address letter or character " + printable(f));
     }
   }
 
@@ -148,13 +137,14 @@ class Reader {
 
   void digit(unsigned d) {
     if (word_ == Word::kNone)
-      fail(kMalformedNumber, offset_, "malformed number: a digit without an address letter");
+      fail(TapeError::kMalformedNumber, offset_,
+           "malformed number: a digit without an address letter");
     if (part_ == Part::kFraction && fraction_count_ == fraction_digits())
-      fail(kMalformedNumber, offset_,
+      fail(TapeError::kMalformedNumber, offset_,
            "malformed number: " + word_name() + " has more than " +
                std::to_string(fraction_digits()) + " fraction digits");
     if (value_ > (max_value() - d) / 10)
-      fail(kValueTooWide, offset_, "value too wide for its register: " + word_name() +
+      fail(TapeError::kValueTooWide, offset_, "value too wide for its register: " + word_name() +
                                        " exceeds " + std::to_string(max_value()));
     value_ = value_ * 10 + d;
     if (part_ == Part::kFraction)
@@ -165,7 +155,7 @@ class Reader {
 
   void sign(bool negative) {
     if (word_ == Word::kNone || !signed_word() || part_ != Part::kStart)
-      fail(kMalformedNumber, offset_, "malformed number: misplaced sign");
+      fail(TapeError::kMalformedNumber, offset_, "malformed number: misplaced sign");
     negative_ = negative;
     part_ = Part::kSign;
   }
@@ -173,7 +163,7 @@ class Reader {
   void point() {
     const bool fractional = signed_word() || word_ == Word::kF;
     if (!fractional || part_ != Part::kInteger)
-      fail(kMalformedNumber, offset_, "malformed number: misplaced '.'");
+      fail(TapeError::kMalformedNumber, offset_, "malformed number: misplaced '.'");
     part_ = Part::kFraction;
   }
 
@@ -195,7 +185,7 @@ class Reader {
                               ? part_ == Part::kFraction && fraction_count_ == fraction_digits()
                               : part_ == Part::kInteger;
     if (!complete)
-      fail(kMalformedNumber, word_offset_,
+      fail(TapeError::kMalformedNumber, word_offset_,
            "malformed number: " + word_name() +
                (fractional ? " needs digits, '.' and exactly " +
                                  std::to_string(fraction_digits()) + " fraction digits"
@@ -222,9 +212,10 @@ class Reader {
 
   void g_code() {
     switch (value_) {
-      case 1: motion_ = Motion::kLine; break;
-      case 2: motion_ = Motion::kArcCw; break;
-      case 3: motion_ = Motion::kArcCcw; break;
+#define TAPE_MOTION(name, code, word) \
+  case code: motion_ = Motion::k##name; break;
+#include "tape_motions.def"
+#undef TAPE_MOTION
       case 17: case 21: case 91: case 93: return;  // XY plane, mm, incremental, inverse time
       default: unsupported("G");
     }
@@ -232,14 +223,15 @@ class Reader {
   }
 
   [[noreturn]] void unsupported(const char* letter) {
-    fail(kUnsupportedCode, word_offset_,
+    fail(TapeError::kUnsupportedCode, word_offset_,
          std::string("unsupported G or M code: ") + letter + std::to_string(value_));
   }
 
   void end_block() {
     if (motion_in_block_) {
       if (feed_ == 0)
-        fail(kMissingFeed, offset_, "missing feed: no F programmed (or F0) for a motion block");
+        fail(TapeError::kMissingFeed, offset_,
+             "missing feed: no F programmed (or F0) for a motion block");
       block_.n = n_;
       block_.motion = motion_;
       block_.feed = feed_;
@@ -256,7 +248,7 @@ class Reader {
 
   void check_arc() {
     const ArcRuleBroken broken = broken_arc_rule(block_, inc_max_);
-    if (broken.code != 0) fail(broken.code, offset_, broken.message);
+    if (broken.code != TapeError::kNone) fail(broken.code, offset_, broken.message);
   }
 
   const Format& format_;

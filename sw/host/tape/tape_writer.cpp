@@ -49,7 +49,7 @@ void check_block(const Block& b, const Format& f) {
     throw std::invalid_argument(where + "a line block has I/J");
   if (b.motion != Motion::kLine) {
     const ArcRuleBroken broken = broken_arc_rule(b, inc_max);
-    if (broken.code != 0) throw std::invalid_argument(where + broken.message);
+    if (broken.code != TapeError::kNone) throw std::invalid_argument(where + broken.message);
   }
   if (b.feed == 0) throw std::invalid_argument(where + "feed F is 0");
   if (b.feed > max_for_width(f.feed_width))
