@@ -47,7 +47,7 @@ std::vector<std::string> model_source_files() {
   for (const char* dir : {"sw/host/firststage", "sw/host/tape", "sc_model/golden", "sc_model/checker", "sw/tools/sweep"})
     for (const auto& e : std::filesystem::recursive_directory_iterator(root + "/" + dir)) {
       const std::string ext = e.path().extension().string();
-      if (e.is_regular_file() && (ext == ".h" || ext == ".cpp" || ext == ".sv")) files.push_back(e.path().string());
+      if (e.is_regular_file() && (ext == ".h" || ext == ".cpp" || ext == ".sv" || ext == ".def")) files.push_back(e.path().string());
     }
   std::sort(files.begin(), files.end());
   return files;
