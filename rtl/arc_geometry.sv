@@ -10,9 +10,14 @@
 // among y0, y1 and (ccw ? -dx : dx), and the move is not zero; the end outside the
 // increment register (|x1| or |y1| > 2^W - 1, code 4). The radius check (code 11) is
 // arc_radius_check.sv. The golden twin is sc_model/golden/arc_geometry.cpp.
-// Timing: purely combinational. With enable_i low every output is 0: the logic is only
-// evaluated while an arc is prepared, which keeps the verilated model fast (a gate per
-// output in hardware).
+// How (lean): everything stays in sign + magnitude, one W + 1-bit adder per axis. |x1| is
+// |x0| + |dx| when the move goes away from the centre's axis (or x0 = 0) and |x0| - |dx|
+// when it goes towards it; a negative difference means the end crossed the axis, which is
+// a quadrant error, so |x1| is only needed (and only exact) when it did not cross. The
+// magnitude then grows exactly when it is a sum and the move is not zero.
+// Timing: purely combinational. The outputs are used only with enable_i high; with it low
+// they are don't-care ('x): the verilated model skips the logic (fast), and synthesis
+// folds the 'x away, so the enable costs no gate.
 module arc_geometry #(
   parameter int IncWidth = 16,
   parameter int KWidth   = $clog2(IncWidth + 1)
@@ -29,7 +34,7 @@ module arc_geometry #(
   input  logic                ccw_i,     // G03 (else G02)
   output logic [IncWidth-1:0] x0_o,      // |S| per axis
   output logic [IncWidth-1:0] y0_o,
-  output logic [IncWidth-1:0] x1_o,      // |E| per axis (low W bits; see error_o)
+  output logic [IncWidth-1:0] x1_o,      // |E| per axis (when the arc passes the checks)
   output logic [IncWidth-1:0] y1_o,
   output logic                grow_x_o,  // |x| grows along the arc
   output logic                grow_y_o,
@@ -38,66 +43,81 @@ module arc_geometry #(
   output logic [3:0]          error_code_o
 );
 
-  // Signed values need W + 2 bits: |x1| = |x0 + dx| <= 2^(W+1) - 2.
-  localparam int SWidth = IncWidth + 2;
 
-  localparam logic [3:0] ErrTooWide       = 4'd4;
-  localparam logic [3:0] ErrCrossQuadrant = 4'd10;
-  localparam logic [3:0] ErrZeroRadius    = 4'd12;
+  // One axis: start magnitude s (sign: s_pos, the start is -I so it is positive when I is
+  // negative), move d (d_pos). Result {plus, minus, end_mag, grow, too_wide}: the signs of
+  // the start and the end as votes for the quadrant's sign, the end's magnitude, whether it
+  // grows and whether it overflows the register.
+  localparam int AxisWidth = IncWidth + 4;
+  function automatic logic [AxisWidth-1:0] axis(input logic [IncWidth-1:0] s, input logic s_pos,
+                                                input logic [IncWidth-1:0] d, input logic d_pos);
+    logic              s_zero, d_zero, away, end_pos, end_zero;
+    logic [IncWidth:0] r;
+    s_zero = s == '0;
+    d_zero = d == '0;
+    // Away from the axis (or from it, x0 = 0): a sum; towards it: a difference.
+    away     = s_zero || s_pos == d_pos;
+    r        = away ? {1'b0, s} + {1'b0, d} : {1'b0, s} - {1'b0, d};
+    end_zero = r == '0;
+    // A negative difference: the end is on the move's side of the axis (crossed it).
+    end_pos  = away ? (s_zero ? d_pos : s_pos) : (r[IncWidth] ? d_pos : s_pos);
+    axis = {(!s_zero && s_pos) || (!end_zero && end_pos),
+            (!s_zero && !s_pos) || (!end_zero && !end_pos),
+            r[IncWidth-1:0], away && !d_zero, away && r[IncWidth]};
+  endfunction
 
-  logic signed [SWidth-1:0] x0, y0, dx, dy, x1, y1;
-  logic [SWidth-1:0]        x1_mag, y1_mag;
-  logic                     x_plus, x_minus, y_plus, y_minus, moves, in_quadrant, too_wide;
+  logic                ax_plus, ax_minus, ax_grow, ax_too_wide;
+  logic                ay_plus, ay_minus, ay_grow, ay_too_wide;
+  logic [IncWidth-1:0] ax_end, ay_end;
+  logic  dx_plus, dx_minus, dy_plus, dy_minus, moves, in_quadrant;
+  logic [IncWidth-1:0] all_bits;
 
   always_comb begin
-    x0 = '0;  y0 = '0;  dx = '0;  dy = '0;  x1 = '0;  y1 = '0;  x1_mag = '0;  y1_mag = '0;
-    x_plus = 1'b0;  x_minus = 1'b0;  y_plus = 1'b0;  y_minus = 1'b0;
-    moves = 1'b0;  in_quadrant = 1'b0;  too_wide = 1'b0;
-    x0_o = '0;  y0_o = '0;  x1_o = '0;  y1_o = '0;  grow_x_o = 1'b0;  grow_y_o = 1'b0;
-    k_o = '0;
-    error_o = 1'b0;
-    error_code_o = ErrZeroRadius;
+    {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide} = 'x;
+    {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide} = 'x;
+    {dx_plus, dx_minus, dy_plus, dy_minus, moves, in_quadrant} = 'x;
+    all_bits = 'x;
+    x0_o = 'x;  y0_o = 'x;  x1_o = 'x;  y1_o = 'x;  grow_x_o = 1'bx;  grow_y_o = 1'bx;
+    k_o = 'x;
+    error_o = 1'bx;
+    error_code_o = interp_pkg::ErrArcZeroRadius;
     if (enable_i) begin
-      x0 = i_neg_i ? SWidth'(i_i) : -(SWidth'(i_i));  // start - centre = -I
-      y0 = j_neg_i ? SWidth'(j_i) : -(SWidth'(j_i));
-      dx = dx_neg_i ? -(SWidth'(dx_i)) : SWidth'(dx_i);
-      dy = dy_neg_i ? -(SWidth'(dy_i)) : SWidth'(dy_i);
-      x1 = x0 + dx;
-      y1 = y0 + dy;
-      x1_mag = x1[SWidth-1] ? -x1 : x1;
-      y1_mag = y1[SWidth-1] ? -y1 : y1;
-
+      {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide} = axis(i_i, i_neg_i, dx_i, !dx_neg_i);
+      {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide} = axis(j_i, j_neg_i, dy_i, !dy_neg_i);
+      dx_plus  = dx_i != '0 && !dx_neg_i;
+      dx_minus = dx_i != '0 && dx_neg_i;
+      dy_plus  = dy_i != '0 && !dy_neg_i;
+      dy_minus = dy_i != '0 && dy_neg_i;
       // Votes for the quadrant's signs: the ends, and the motion (a ccw arc in the quadrant
       // (sx, sy) has sign(dy) = sx and sign(dx) = -sy; a cw arc the opposite).
-      x_plus  = (x0 > 0) || (x1 > 0) || (ccw_i ? dy > 0 : dy < 0);
-      x_minus = (x0 < 0) || (x1 < 0) || (ccw_i ? dy < 0 : dy > 0);
-      y_plus  = (y0 > 0) || (y1 > 0) || (ccw_i ? dx < 0 : dx > 0);
-      y_minus = (y0 < 0) || (y1 < 0) || (ccw_i ? dx > 0 : dx < 0);
-      moves       = dx_i != '0 || dy_i != '0;
-      in_quadrant = moves && !(x_plus && x_minus) && !(y_plus && y_minus);
-      too_wide    = x1_mag[SWidth-1:IncWidth] != '0 || y1_mag[SWidth-1:IncWidth] != '0;
+      moves       = dx_plus || dx_minus || dy_plus || dy_minus;
+      in_quadrant = moves &&
+                    !((ax_plus || (ccw_i ? dy_plus : dy_minus)) &&
+                      (ax_minus || (ccw_i ? dy_minus : dy_plus))) &&
+                    !((ay_plus || (ccw_i ? dx_minus : dx_plus)) &&
+                      (ay_minus || (ccw_i ? dx_plus : dx_minus)));
 
-      error_o      = 1'b1;
-      error_code_o = ErrZeroRadius;
+      error_o = 1'b1;
       if (i_i == '0 && j_i == '0) begin
-        error_code_o = ErrZeroRadius;
+        error_code_o = interp_pkg::ErrArcZeroRadius;
       end else if (!in_quadrant) begin
-        error_code_o = ErrCrossQuadrant;
-      end else if (too_wide) begin
-        error_code_o = ErrTooWide;
+        error_code_o = interp_pkg::ErrArcCrossesQuadrant;
+      end else if (ax_too_wide || ay_too_wide) begin
+        error_code_o = interp_pkg::ErrValueTooWide;
       end else begin
-        error_o = 1'b0;
+        error_o = 1'bx;
       end
 
       x0_o     = i_i;
       y0_o     = j_i;
-      x1_o     = x1_mag[IncWidth-1:0];
-      y1_o     = y1_mag[IncWidth-1:0];
-      grow_x_o = x1_mag > SWidth'(i_i);
-      grow_y_o = y1_mag > SWidth'(j_i);
+      x1_o     = ax_end;
+      y1_o     = ay_end;
+      grow_x_o = ax_grow;
+      grow_y_o = ay_grow;
       // k: position of the highest 1 of any magnitude, plus one (a priority encoder).
+      all_bits = i_i | j_i | ax_end | ay_end;
       for (int b = 0; b < IncWidth; b++) begin
-        if (i_i[b] || j_i[b] || x1_o[b] || y1_o[b]) k_o = KWidth'(b + 1);
+        if (all_bits[b]) k_o = KWidth'(b + 1);
       end
     end
   end

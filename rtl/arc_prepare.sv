@@ -2,7 +2,7 @@
 //
 // What: while the decoder holds a complete arc block (run_i), this module (a) checks it:
 // zero radius, quadrant and register width at once (arc_geometry.sv), and the end's
-// distance to the circle with a bit-serial squarer (arc_radius_check.sv, 2W + 3 clocks);
+// distance to the circle on one serial adder (arc_radius_check.sv, 5W + 5 clocks);
 // and (b) runs the block's circle DDA once without pulses, one iteration per clock, adding
 // F at every iteration. When both are over, S = F * N (N = the block's iteration count)
 // goes with the block, and the feed generator plays the N iterations in M / F clocks, as
@@ -11,7 +11,7 @@
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
 // high in that clock; otherwise the dry run iterates at the next edges and done_o rises
 // in the clock after the later of the last iteration and the last check step, i.e.
-// max(N, 2W + 3) clocks after the start edge. done_o and the error are combinational
+// max(N, 5W + 5) clocks after the start edge. done_o and the error are combinational
 // from registers (and the held block); the decoder acts on them at that edge.
 module arc_prepare #(
   parameter int IncWidth  = 16,
@@ -43,7 +43,6 @@ module arc_prepare #(
   output logic                 grow_y_o
 );
 
-  localparam logic [3:0] ErrOffCircle = 4'd11;
 
   // running_q: the arc's dry run and radius check are in progress (after the start edge).
   // step_q: F summed once per dry-run iteration.
@@ -90,7 +89,7 @@ module arc_prepare #(
   always_comb begin
     done_o     = 1'b0;
     err_o      = 1'b0;
-    err_code_o = ErrOffCircle;
+    err_code_o = interp_pkg::ErrArcEndpointOffCircle;
     if (start && geo_err) begin
       done_o     = 1'b1;
       err_o      = 1'b1;

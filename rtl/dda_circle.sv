@@ -8,7 +8,9 @@
 // like forward Euler), and the order alternates every iteration, X first on the first one,
 // which cancels the first-order tilt of the closed curve. Per-axis pulse counters (|dx|,
 // |dy|) stop each axis exactly at the programmed end; the block's iterations are over
-// when both are 0 (done_o). The golden twin is sc_model/golden/circle_dda.h.
+// when both are 0 (done_o). The golden twin is sc_model/golden/circle_dda.h (which keeps
+// the axes by name and a y_first flag; here they are kept by role, see below: the same
+// values, one multiplexer layer less).
 // Timing: load_i loads the block at an edge where no iteration happens; an iteration
 // happens at an edge with strobe_i while !done_o and its pulses show after that edge.
 // The next-state logic is evaluated only at a load, an iteration or to clear the step
@@ -42,19 +44,22 @@ module dda_circle #(
 );
 
   // kpow_q: 2^k of the playing block, one-hot (the integrators' carry bit).
-  logic [IncWidth:0]   kpow_q, kpow_d;
+  // The axes are stored by role, not by name: A is the axis that goes first in the next
+  // iteration, B the other. The axis that went second goes first in the next iteration
+  // (X Y | Y X | X Y ...), so after every iteration A and B simply swap: the first
+  // half-step always reads A and the second always B, with no operand multiplexer, and
+  // a_is_y_q says which axis A is (it toggles every iteration; X first after a load).
   // acc_*_q: the integrators, in [0, 2^k), half at the load (rounding to nearest).
-  // mag_*_q: |x|, |y| relative to the centre. cnt_*_q: pulses left per axis.
-  logic [IncWidth-1:0] acc_x_q, acc_x_d, acc_y_q, acc_y_d;
-  logic [IncWidth-1:0] mag_x_q, mag_x_d, mag_y_q, mag_y_d;
-  logic [IncWidth-1:0] cnt_x_q, cnt_x_d, cnt_y_q, cnt_y_d;
-  // grow_*_q: the magnitude grows at that axis's steps (fixed for the block).
-  // dir_*_q: step direction, held for the block. step_*_q: the one-clock step pulses.
-  logic                grow_x_q, grow_x_d, grow_y_q, grow_y_d;
+  // mag_*_q: |a|, |b| relative to the centre. cnt_*_q: pulses left. grow_*_q: the
+  // magnitude grows at that axis's steps (fixed for the block).
+  logic [IncWidth:0]   kpow_q, kpow_d;
+  logic [IncWidth-1:0] acc_a_q, acc_a_d, acc_b_q, acc_b_d;
+  logic [IncWidth-1:0] mag_a_q, mag_a_d, mag_b_q, mag_b_d;
+  logic [IncWidth-1:0] cnt_a_q, cnt_a_d, cnt_b_q, cnt_b_d;
+  logic                grow_a_q, grow_a_d, grow_b_q, grow_b_d, a_is_y_q, a_is_y_d;
+  // dir_*_q: step direction per axis, held for the block. step_*_q: the one-clock pulses.
   logic                dir_x_q, dir_x_d, dir_y_q, dir_y_d;
   logic                step_x_q, step_x_d, step_y_q, step_y_d;
-  // y_first_q: this iteration steps Y before X; toggles every iteration (X first after load).
-  logic                y_first_q, y_first_d;
 
   // One axis's half of an iteration: axis A's integrator adds |b|, the other coordinate's
   // magnitude; a carry out of bit k is a step of A, which moves |a| one BLU (up if A's
@@ -90,8 +95,8 @@ module dda_circle #(
 
   logic                   iterate, active;
   logic [IncWidth:0]      kpow_load;
-  // The two half-steps of an iteration: "first" is the axis going first (Y when
-  // y_first_q), "second" the other, integrating the magnitude the first has just moved.
+  // The two half-steps of an iteration: A's first, then B's, which integrates the
+  // magnitude A has just moved.
   logic                   first_step, second_step;
   logic [IncWidth-1:0]    first_acc, first_mag, first_cnt, second_acc, second_mag, second_cnt;
 
@@ -100,47 +105,43 @@ module dda_circle #(
   assign kpow_load = (IncWidth + 1)'(1) << k_i;
 
   always_comb begin
-    {kpow_d, acc_x_d, acc_y_d, mag_x_d, mag_y_d, cnt_x_d, cnt_y_d, grow_x_d, grow_y_d, dir_x_d,
-     dir_y_d, y_first_d, step_x_d, step_y_d, carry_x_o, carry_y_o, first_step, first_acc,
-     first_mag, first_cnt, second_step, second_acc, second_mag, second_cnt} = '0;
+    // The pulses are 0 unless an iteration makes them; every other value is only stored
+    // when active (the registers' enable), so it is don't-care ('x) otherwise: the
+    // verilated model skips it and synthesis needs no gate for it.
+    {step_x_d, step_y_d, carry_x_o, carry_y_o} = '0;
+    {kpow_d, acc_a_d, acc_b_d, mag_a_d, mag_b_d, cnt_a_d, cnt_b_d, grow_a_d, grow_b_d,
+     a_is_y_d, dir_x_d, dir_y_d, first_step, first_acc, first_mag, first_cnt, second_step,
+     second_acc, second_mag, second_cnt} = 'x;
     if (active) begin
-      kpow_d    = kpow_q;
-      acc_x_d   = acc_x_q;   acc_y_d  = acc_y_q;
-      mag_x_d   = mag_x_q;   mag_y_d  = mag_y_q;
-      cnt_x_d   = cnt_x_q;   cnt_y_d  = cnt_y_q;
-      grow_x_d  = grow_x_q;  grow_y_d = grow_y_q;
-      dir_x_d   = dir_x_q;   dir_y_d  = dir_y_q;
-      y_first_d = y_first_q;
+      kpow_d   = kpow_q;
+      acc_a_d  = acc_a_q;   acc_b_d  = acc_b_q;
+      mag_a_d  = mag_a_q;   mag_b_d  = mag_b_q;
+      cnt_a_d  = cnt_a_q;   cnt_b_d  = cnt_b_q;
+      grow_a_d = grow_a_q;  grow_b_d = grow_b_q;
+      a_is_y_d = a_is_y_q;
+      dir_x_d  = dir_x_q;   dir_y_d  = dir_y_q;
       if (load_i) begin
-        kpow_d    = kpow_load;
-        acc_x_d   = kpow_load[IncWidth:1];
-        acc_y_d   = kpow_load[IncWidth:1];
-        mag_x_d   = x_i;       mag_y_d  = y_i;
-        cnt_x_d   = cnt_x_i;   cnt_y_d  = cnt_y_i;
-        grow_x_d  = grow_x_i;  grow_y_d = grow_y_i;
-        dir_x_d   = dir_x_i;   dir_y_d  = dir_y_i;
-        y_first_d = 1'b0;
+        // X goes first in the first iteration: A = X, B = Y.
+        kpow_d   = kpow_load;
+        acc_a_d  = kpow_load[IncWidth:1];
+        acc_b_d  = kpow_load[IncWidth:1];
+        mag_a_d  = x_i;       mag_b_d  = y_i;
+        cnt_a_d  = cnt_x_i;   cnt_b_d  = cnt_y_i;
+        grow_a_d = grow_x_i;  grow_b_d = grow_y_i;
+        a_is_y_d = 1'b0;
+        dir_x_d  = dir_x_i;   dir_y_d  = dir_y_i;
       end else if (iterate) begin
-        if (y_first_q) begin
-          {first_step, first_acc, first_mag, first_cnt} =
-              half_step(kpow_q, acc_y_q, mag_x_q, cnt_x_q == '0, mag_y_q, grow_y_q, cnt_y_q);
-          {second_step, second_acc, second_mag, second_cnt} =
-              half_step(kpow_q, acc_x_q, first_mag, first_cnt == '0, mag_x_q, grow_x_q, cnt_x_q);
-          acc_y_d = first_acc;   mag_y_d = first_mag;   cnt_y_d = first_cnt;
-          acc_x_d = second_acc;  mag_x_d = second_mag;  cnt_x_d = second_cnt;
-          carry_y_o = first_step;
-          carry_x_o = second_step;
-        end else begin
-          {first_step, first_acc, first_mag, first_cnt} =
-              half_step(kpow_q, acc_x_q, mag_y_q, cnt_y_q == '0, mag_x_q, grow_x_q, cnt_x_q);
-          {second_step, second_acc, second_mag, second_cnt} =
-              half_step(kpow_q, acc_y_q, first_mag, first_cnt == '0, mag_y_q, grow_y_q, cnt_y_q);
-          acc_x_d = first_acc;   mag_x_d = first_mag;   cnt_x_d = first_cnt;
-          acc_y_d = second_acc;  mag_y_d = second_mag;  cnt_y_d = second_cnt;
-          carry_x_o = first_step;
-          carry_y_o = second_step;
-        end
-        y_first_d = !y_first_q;
+        {first_step, first_acc, first_mag, first_cnt} =
+            half_step(kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0, mag_a_q, grow_a_q, cnt_a_q);
+        {second_step, second_acc, second_mag, second_cnt} =
+            half_step(kpow_q, acc_b_q, first_mag, first_cnt == '0, mag_b_q, grow_b_q, cnt_b_q);
+        // Swap the roles: B went second, so it goes first in the next iteration.
+        acc_a_d  = second_acc;  mag_a_d  = second_mag;  cnt_a_d  = second_cnt;
+        acc_b_d  = first_acc;   mag_b_d  = first_mag;   cnt_b_d  = first_cnt;
+        grow_a_d = grow_b_q;    grow_b_d = grow_a_q;
+        a_is_y_d = !a_is_y_q;
+        carry_x_o = a_is_y_q ? second_step : first_step;
+        carry_y_o = a_is_y_q ? first_step : second_step;
         step_x_d  = carry_x_o;
         step_y_d  = carry_y_o;
       end
@@ -149,30 +150,41 @@ module dda_circle #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      kpow_q    <= '0;
-      acc_x_q   <= '0;  acc_y_q  <= '0;
-      mag_x_q   <= '0;  mag_y_q  <= '0;
-      cnt_x_q   <= '0;  cnt_y_q  <= '0;
-      grow_x_q  <= 1'b0;  grow_y_q <= 1'b0;
-      dir_x_q   <= 1'b0;  dir_y_q  <= 1'b0;
-      step_x_q  <= 1'b0;  step_y_q <= 1'b0;
-      y_first_q <= 1'b0;
+      kpow_q   <= '0;
+      acc_a_q  <= '0;  acc_b_q  <= '0;
+      mag_a_q  <= '0;  mag_b_q  <= '0;
+      cnt_a_q  <= '0;  cnt_b_q  <= '0;
+      grow_a_q <= 1'b0;  grow_b_q <= 1'b0;
+      a_is_y_q <= 1'b0;
+      dir_x_q  <= 1'b0;  dir_y_q  <= 1'b0;
+      step_x_q <= 1'b0;  step_y_q <= 1'b0;
     end else if (active) begin
-      kpow_q    <= kpow_d;
-      acc_x_q   <= acc_x_d;   acc_y_q  <= acc_y_d;
-      mag_x_q   <= mag_x_d;   mag_y_q  <= mag_y_d;
-      cnt_x_q   <= cnt_x_d;   cnt_y_q  <= cnt_y_d;
-      grow_x_q  <= grow_x_d;  grow_y_q <= grow_y_d;
-      dir_x_q   <= dir_x_d;   dir_y_q  <= dir_y_d;
-      step_x_q  <= step_x_d;  step_y_q <= step_y_d;
-      y_first_q <= y_first_d;
+      kpow_q   <= kpow_d;
+      acc_a_q  <= acc_a_d;   acc_b_q  <= acc_b_d;
+      mag_a_q  <= mag_a_d;   mag_b_q  <= mag_b_d;
+      cnt_a_q  <= cnt_a_d;   cnt_b_q  <= cnt_b_d;
+      grow_a_q <= grow_a_d;  grow_b_q <= grow_b_d;
+      a_is_y_q <= a_is_y_d;
+      dir_x_q  <= dir_x_d;   dir_y_q  <= dir_y_d;
+      step_x_q <= step_x_d;  step_y_q <= step_y_d;
     end
   end
+
+  // The registers by axis name, for waves and readers (docs/waves.md); synthesis removes them.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [IncWidth-1:0] acc_x, acc_y, mag_x, mag_y, cnt_x, cnt_y;
+  /* verilator lint_on UNUSEDSIGNAL */
+  assign acc_x = a_is_y_q ? acc_b_q : acc_a_q;
+  assign acc_y = a_is_y_q ? acc_a_q : acc_b_q;
+  assign mag_x = a_is_y_q ? mag_b_q : mag_a_q;
+  assign mag_y = a_is_y_q ? mag_a_q : mag_b_q;
+  assign cnt_x = a_is_y_q ? cnt_b_q : cnt_a_q;
+  assign cnt_y = a_is_y_q ? cnt_a_q : cnt_b_q;
 
   assign step_x_o = step_x_q;
   assign step_y_o = step_y_q;
   assign dir_x_o  = dir_x_q;
   assign dir_y_o  = dir_y_q;
-  assign done_o   = cnt_x_q == '0 && cnt_y_q == '0;
+  assign done_o   = cnt_a_q == '0 && cnt_b_q == '0;
 
 endmodule

@@ -9,6 +9,8 @@
 // Timing: at the load edge step_q = phase_q = S (the load clock counts as the first add)
 // and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
 // registers and acts in the same edge as the DDA iteration it triggers.
+// Golden twin: the section "Feed generator" of GoldenInterp::tick()
+// (sc_model/golden/golden_interp.h).
 module feed_generator #(
   parameter int StepWidth    = 49,
   parameter int ModulusWidth = 48
@@ -23,57 +25,61 @@ module feed_generator #(
   output logic                    saturated_o
 );
 
-  // phase + S < 2M when not saturated, and S itself needs StepWidth bits.
-  localparam int SumWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
-  localparam int PhaseWidth = SumWidth + 1;
+  // Only a block that is not saturated uses the phase, and then S < M: S, the phase
+  // (< M) and phase + S (< 2M) need ModulusWidth (+ 1) bits whatever StepWidth is.
+  localparam int PhaseWidth = ModulusWidth + 1;
+  localparam int CmpWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
-  // logic depends on an input combinationally). Valid from the first clock after reset,
-  // long before the first block can load.
+  // logic depends on an input combinationally). Valid from the first clock on, long before
+  // the first block can load (the fourth clock after reset), so it has no reset: a board
+  // that ties feed_modulus_i to a constant (rtl/fpga/interp_ice40_top.sv) then has a
+  // register with a constant input and no reset value, which synthesis replaces by the
+  // constant, and the compares with M fold.
   logic [ModulusWidth-1:0] modulus_q;
-  // step_q: S of the playing block. phase_q: accumulated feed, always < M when
-  // not saturated. saturated_q: S >= M, one iteration per clock.
+  // step_q: S of the playing block (its low bits: all of it when not saturated).
+  // phase_q: accumulated feed, always < M when not saturated. saturated_q: S >= M, one
+  // iteration per clock.
   logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
   logic                  saturated_q, saturated_d;
 
-  logic [PhaseWidth-1:0] step_load, sum, modulus;
-  logic                  reached;
+  logic [PhaseWidth-1:0] sum, modulus, over;
+  logic                  reached, borrow;
 
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
     modulus     = PhaseWidth'(modulus_q);
-    step_load   = '0;
-    sum         = '0;
-    reached     = 1'b0;
+    sum         = 'x;  // used only while running unsaturated
+    {borrow, over, reached} = 'x;
     strobe_o    = 1'b0;
     step_d      = step_q;
     phase_d     = phase_q;
     saturated_d = saturated_q;
     if (load_i) begin
-      step_load   = PhaseWidth'(step_i);
-      step_d      = step_load;
-      phase_d     = step_load;
-      saturated_d = step_load >= modulus;
+      step_d      = PhaseWidth'(step_i);
+      phase_d     = PhaseWidth'(step_i);
+      saturated_d = CmpWidth'(step_i) >= CmpWidth'(modulus_q);
     end else if (run_i) begin
       if (saturated_q) begin
         strobe_o = 1'b1;
       end else begin
-        sum      = phase_q + step_q;
-        reached  = sum >= modulus;
+        // One subtraction gives both the compare (no borrow: sum >= M) and sum - M.
+        sum            = phase_q + step_q;
+        {borrow, over} = {1'b0, sum} - {1'b0, modulus};
+        reached        = !borrow;
         strobe_o = reached;
-        phase_d  = reached ? sum - modulus : sum;
+        phase_d  = reached ? over : sum;
       end
     end
   end
 
   always_ff @(posedge clk_i) begin
+    modulus_q <= modulus_i;
     if (!rst_ni) begin
-      modulus_q   <= '0;
       step_q      <= '0;
       phase_q     <= '0;
       saturated_q <= 1'b0;
     end else begin
-      modulus_q   <= modulus_i;
       step_q      <= step_d;
       phase_q     <= phase_d;
       saturated_q <= saturated_d;

@@ -5,7 +5,10 @@
 // (feed_generator + dda_line for G01, dda_circle for G02/G03) -> position counters, plus
 // the machine status. Ports and parameters are the contract
 // of docs/architecture.md; the microarchitecture and the clock-by-clock timing are in
-// docs/interpolator.md, which the golden model (sc_model/golden/) follows too.
+// docs/interpolator.md, which the golden model (sc_model/golden/) follows too. The golden
+// twin is GoldenInterp (sc_model/golden/golden_interp.h); its tick() holds the twins of
+// block_buffer.sv, feed_generator.sv, dda_line.sv + dda_integrator.sv and
+// position_counter.sv as named sections, and this module's status logic.
 // Timing: every output is a register or a function of registers (Moore). A block loads at
 // an edge where the buffer holds one and the player is idle or in the finishing clock of
 // the previous block, so blocks follow without gap clocks when the reader keeps up. An
@@ -59,8 +62,22 @@ module interp_top #(
   localparam int StepWidth = FeedWidth + IncWidth + 1;
   // A decoded block as the buffer stores it: N, motion, dx, dy (sign + magnitude), |i|, |j|
   // (the arc's start about its centre), S, k, and for an arc the growth of |x| and |y|.
-  localparam int BlockWidth = SeqWidth + 2 + 2 * (IncWidth + 1) + 2 * IncWidth + StepWidth +
-                              KWidth + 2;
+  // The codes are interp_pkg's; the struct is declared here because its widths are this
+  // module's parameters (interp_pkg.sv explains why a package cannot hold it).
+  typedef struct packed {
+    logic [SeqWidth-1:0]  n;
+    logic [interp_pkg::MotionWidth-1:0] motion;  // an interp_pkg::motion_e code
+    logic                 dx_neg;
+    logic [IncWidth-1:0]  dx;
+    logic                 dy_neg;
+    logic [IncWidth-1:0]  dy;
+    logic [IncWidth-1:0]  i;
+    logic [IncWidth-1:0]  j;
+    logic [StepWidth-1:0] step;
+    logic [KWidth-1:0]    k;
+    logic                 grow_x;
+    logic                 grow_y;
+  } block_t;
 
   // Decoder -> buffer.
   logic                   dec_valid, buf_ready;
@@ -78,7 +95,15 @@ module interp_top #(
 
   // Buffer -> player.
   logic                   next_valid;
-  logic [BlockWidth-1:0]  next_block;
+  block_t                 dec_block, next_block;
+  // The buffer's width, from the struct: Yosys 0.23 takes $bits of a signal only, Icarus 11
+  // (bench/sim) evaluates $bits of a struct signal in a parameter wrongly (2): each gets the
+  // form it reads right.
+`ifdef __ICARUS__
+  localparam int BlockWidth = $bits(block_t);
+`else
+  localparam int BlockWidth = $bits(dec_block);
+`endif
   logic [SeqWidth-1:0]    next_n;
   logic [IncWidth-1:0]    next_dx, next_dy, next_i, next_j;
   logic                   next_dx_neg, next_dy_neg;
@@ -118,18 +143,40 @@ module interp_top #(
     .err_block_o(dec_err_block), .err_offset_o(dec_err_offset)
   );
 
+  assign dec_block.n      = dec_n;
+  assign dec_block.motion = dec_motion;
+  assign dec_block.dx_neg = dec_dx_neg;
+  assign dec_block.dx     = dec_dx;
+  assign dec_block.dy_neg = dec_dy_neg;
+  assign dec_block.dy     = dec_dy;
+  assign dec_block.i      = dec_i;
+  assign dec_block.j      = dec_j;
+  assign dec_block.step   = dec_step;
+  assign dec_block.k      = dec_k;
+  assign dec_block.grow_x = dec_grow_x;
+  assign dec_block.grow_y = dec_grow_y;
+
   block_buffer #(.Width(BlockWidth)) u_buffer (
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
-    .in_block_i({dec_n, dec_motion, dec_dx_neg, dec_dx, dec_dy_neg, dec_dy,
-                 dec_i, dec_j, dec_step, dec_k, dec_grow_x, dec_grow_y}),
+    .in_block_i(dec_block),
     .pop_i(load),
     .out_valid_o(next_valid), .out_block_o(next_block)
   );
 
-  assign {next_n, next_motion, next_dx_neg, next_dx, next_dy_neg, next_dy,
-          next_i, next_j, next_step, next_k, next_grow_x, next_grow_y} = next_block;
-  assign next_arc = next_motion != 2'd1;
+  assign next_n      = next_block.n;
+  assign next_motion = next_block.motion;
+  assign next_dx_neg = next_block.dx_neg;
+  assign next_dx     = next_block.dx;
+  assign next_dy_neg = next_block.dy_neg;
+  assign next_dy     = next_block.dy;
+  assign next_i      = next_block.i;
+  assign next_j      = next_block.j;
+  assign next_step   = next_block.step;
+  assign next_k      = next_block.k;
+  assign next_grow_x = next_block.grow_x;
+  assign next_grow_y = next_block.grow_y;
+  assign next_arc = next_motion != interp_pkg::MotionLine;
 
   // The playing block's iterations are over when both DDAs are idle (only one was loaded).
   assign finished = line_idle && circle_idle;

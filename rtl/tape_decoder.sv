@@ -7,13 +7,16 @@
 // gives its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k.
 // The first bad frame stops the decoder with an error code, the bad block's N (or the
 // previous one) and the frame's offset; the error is only reported by interp_top once every
-// good block has played.
+// good block has played. The golden twin is GoldenTapeDecoder
+// (sc_model/golden/golden_decoder.h), whose named steps (process_frame, body_character,
+// digit, sign, dot, start_word, finish_word, end_of_block, handoff, fail) follow this
+// module decision by decision.
 //
 // Timing: the reader's signals are registered first (so no logic depends on an input
 // combinationally): a frame taken at edge e (frame_valid_i & frame_ready_o) lands in the
 // input register and is processed at edge e+1, while the next frame may be taken. The LF
 // of a line block puts the decoder in HOLD, the LF of an arc block in ARC until arc_prepare
-// is done (max(N, 2W + 3) clocks), then HOLD or ERROR; the block buffer takes a held block
+// is done (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block
 // at the first edge where it is empty (blk_ready_i). frame_ready_o is low while the input
 // register is full and cannot be processed at the next edge (ARC, HOLD), and after an
 // error. tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a
@@ -79,43 +82,13 @@ module tape_decoder #(
   localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
   localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
   localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
+  localparam logic [WideWidth-1:0] CodeMask  = WideWidth'(127);
   localparam int KWidth = $clog2(IncWidth + 1);
   localparam int StepWidth = FeedWidth + IncWidth + 1;
   localparam logic [3:0] FracCount     = 4'(FracDigits);
   localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
 
-  // Error codes (docs/architecture.md).
-  localparam logic [3:0] ErrParity      = 4'd1;
-  localparam logic [3:0] ErrUnknownChar = 4'd2;
-  localparam logic [3:0] ErrMalformed   = 4'd3;
-  localparam logic [3:0] ErrTooWide     = 4'd4;
-  localparam logic [3:0] ErrMissingEob  = 4'd5;
-  localparam logic [3:0] ErrUnsupported = 4'd6;
-  localparam logic [3:0] ErrTruncated   = 4'd7;
-  localparam logic [3:0] ErrAfterEnd    = 4'd8;
-  localparam logic [3:0] ErrMissingFeed = 4'd9;
 
-  // ISO 646 characters.
-  localparam logic [6:0] ChNul     = 7'h00;
-  localparam logic [6:0] ChLf      = 7'h0a;
-  localparam logic [6:0] ChCr      = 7'h0d;
-  localparam logic [6:0] ChSpace   = 7'h20;
-  localparam logic [6:0] ChPercent = 7'h25;
-  localparam logic [6:0] ChOpen    = 7'h28;
-  localparam logic [6:0] ChClose   = 7'h29;
-  localparam logic [6:0] ChPlus    = 7'h2b;
-  localparam logic [6:0] ChMinus   = 7'h2d;
-  localparam logic [6:0] ChDot     = 7'h2e;
-  localparam logic [6:0] ChZero    = 7'h30;
-  localparam logic [6:0] ChNine    = 7'h39;
-  localparam logic [6:0] ChF       = 7'h46;
-  localparam logic [6:0] ChG       = 7'h47;
-  localparam logic [6:0] ChI       = 7'h49;
-  localparam logic [6:0] ChJ       = 7'h4a;
-  localparam logic [6:0] ChM       = 7'h4d;
-  localparam logic [6:0] ChN       = 7'h4e;
-  localparam logic [6:0] ChX       = 7'h58;
-  localparam logic [6:0] ChY       = 7'h59;
 
   typedef enum logic [2:0] {
     StLeader  = 3'd0,  // before '%': frames skipped
@@ -193,7 +166,7 @@ module tape_decoder #(
   logic                   word_ok;      // the word ended by this frame was committed
   logic                   signed_word, fractional_word, word_complete;
   logic [3:0]             frac_limit;
-  logic [WideWidth-1:0]   limit, num_next;
+  logic [WideWidth-1:0]   limit, num_next;  // limit: the word's 2^w - 1 (127 for G and M)
   // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
   // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
   logic                   in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
@@ -221,12 +194,13 @@ module tape_decoder #(
   always_comb begin
     // Clocks without an update (most clocks: the reader is slow) evaluate nothing here:
     // the parser's registers keep their values (the always_ff's enable), so the next-state
-    // values are left at 0, which keeps the verilated model fast.
+    // values are don't-care ('x): the verilated model skips them (fast) and synthesis folds
+    // the 'x away (no gate per next-state bit).
     {state_d, frame_count_d, word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d,
      n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, signed_word, fractional_word,
-     frac_limit, limit, word_complete, num_next} = '0;
+     frac_limit, limit, word_complete, num_next} = 'x;
     if (update) begin
       state_d       = state_q;
       frame_count_d = frame_count_q;
@@ -254,7 +228,7 @@ module tape_decoder #(
       grow_x_d      = grow_x_q;
       grow_y_d      = grow_y_q;
       fail          = 1'b0;
-      fail_code     = ErrParity;
+      fail_code     = interp_pkg::ErrParity;
       fail_offset   = frame_count_q;
       word_ok       = 1'b1;
       signed_word     = 1'b0;
@@ -272,7 +246,7 @@ module tape_decoder #(
         frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
         unique case (word_q)
           WordN:        limit = SeqLimit;
-          WordG, WordM: limit = CodeLimit;
+          WordG, WordM: limit = CodeMask;
           WordF:        limit = FeedLimit;
           default:      limit = IncLimit;
         endcase
@@ -283,44 +257,49 @@ module tape_decoder #(
           fail = 1'b1;  // odd parity
         end else begin
           unique case (state_q)
-            StLeader:  if (ch == ChPercent) state_d = StBody;
-            StComment: if (ch == ChClose) state_d = StBody;
+            StLeader:  if (ch == interp_pkg::ChPercent) state_d = StBody;
+            StComment: if (ch == interp_pkg::ChClose) state_d = StBody;
             StEnd: begin
-              if (!(ch == ChPercent || ch == ChNul || ch == ChCr || ch == ChLf || ch == ChSpace)) begin
+              if (!(ch == interp_pkg::ChPercent || ch == interp_pkg::ChNul ||
+                    ch == interp_pkg::ChCr || ch == interp_pkg::ChLf ||
+                    ch == interp_pkg::ChSpace)) begin
                 fail = 1'b1;
-                fail_code = ErrAfterEnd;
+                fail_code = interp_pkg::ErrBlockAfterEnd;
               end
             end
             StBody: begin
-              if (ch == ChSpace || ch == ChCr) begin
+              if (ch == interp_pkg::ChSpace || ch == interp_pkg::ChCr) begin
                 // ignored everywhere, even inside a number
-              end else if (ch >= ChZero && ch <= ChNine) begin
+              end else if (ch >= interp_pkg::ChZero && ch <= interp_pkg::ChNine) begin
                 if (word_q == WordNone) begin
                   fail = 1'b1;
-                  fail_code = ErrMalformed;
+                  fail_code = interp_pkg::ErrMalformedNumber;
                 end else if (num_state_q == NumFrac && frac_count_q == frac_limit) begin
                   fail = 1'b1;
-                  fail_code = ErrMalformed;  // one fraction digit too many
-                end else if (num_next > limit) begin
+                  fail_code = interp_pkg::ErrMalformedNumber;  // one fraction digit too many
+                end else if ((num_next & ~limit) != '0 ||
+                             ((word_q == WordG || word_q == WordM) &&
+                              num_next[6:0] > CodeLimit[6:0])) begin
+                  // above the word's limit: a mask 2^w - 1 (one OR of the high bits), or 99
                   fail = 1'b1;
-                  fail_code = ErrTooWide;
+                  fail_code = interp_pkg::ErrValueTooWide;
                 end else begin
                   num_d = num_next[NumWidth-1:0];
                   if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
                   else num_state_d = NumInt;
                 end
-              end else if (ch == ChPlus || ch == ChMinus) begin
+              end else if (ch == interp_pkg::ChPlus || ch == interp_pkg::ChMinus) begin
                 if (!signed_word || num_state_q != NumStart) begin
                   fail = 1'b1;
-                  fail_code = ErrMalformed;
+                  fail_code = interp_pkg::ErrMalformedNumber;
                 end else begin
-                  neg_d = ch == ChMinus;
+                  neg_d = ch == interp_pkg::ChMinus;
                   num_state_d = NumSigned;
                 end
-              end else if (ch == ChDot) begin
+              end else if (ch == interp_pkg::ChDot) begin
                 if (!fractional_word || num_state_q != NumInt) begin
                   fail = 1'b1;
-                  fail_code = ErrMalformed;
+                  fail_code = interp_pkg::ErrMalformedNumber;
                 end else begin
                   num_state_d = NumFrac;
                 end
@@ -330,7 +309,7 @@ module tape_decoder #(
                   word_d = WordNone;
                   if (!word_complete) begin
                     word_ok = 1'b0;
-                    fail_code = ErrMalformed;
+                    fail_code = interp_pkg::ErrMalformedNumber;
                   end else begin
                     unique case (word_q)
                       WordN: n_d = num_q[SeqWidth-1:0];
@@ -341,7 +320,7 @@ module tape_decoder #(
                         end else if (!(num_q == NumWidth'(17) || num_q == NumWidth'(21) ||
                                        num_q == NumWidth'(91) || num_q == NumWidth'(93))) begin
                           word_ok = 1'b0;
-                          fail_code = ErrUnsupported;
+                          fail_code = interp_pkg::ErrUnsupportedCode;
                         end
                       end
                       WordM: begin
@@ -349,7 +328,7 @@ module tape_decoder #(
                           end_blk_d = 1'b1;
                         end else begin
                           word_ok = 1'b0;
-                          fail_code = ErrUnsupported;
+                          fail_code = interp_pkg::ErrUnsupportedCode;
                         end
                       end
                       WordX: begin
@@ -382,23 +361,25 @@ module tape_decoder #(
                 end
                 // Then the character itself.
                 if (word_ok) begin
-                  if (ch == ChN || ch == ChG || ch == ChM || ch == ChX || ch == ChY ||
-                      ch == ChI || ch == ChJ || ch == ChF) begin
-                    if (ch == ChN && n_seen_q) begin
+                  if (ch == interp_pkg::ChN || ch == interp_pkg::ChG || ch == interp_pkg::ChM ||
+                      ch == interp_pkg::ChX || ch == interp_pkg::ChY || ch == interp_pkg::ChI ||
+                      ch == interp_pkg::ChJ || ch == interp_pkg::ChF) begin
+                    if (ch == interp_pkg::ChN && n_seen_q) begin
                       fail = 1'b1;
-                      fail_code = ErrMissingEob;  // a second N: the LF is missing
+                      // a second N: the LF is missing
+                      fail_code = interp_pkg::ErrMissingEndOfBlock;
                     end else begin
                       unique case (ch)
-                        ChN:     word_d = WordN;
-                        ChG:     word_d = WordG;
-                        ChM:     word_d = WordM;
-                        ChX:     word_d = WordX;
-                        ChY:     word_d = WordY;
-                        ChI:     word_d = WordI;
-                        ChJ:     word_d = WordJ;
+                        interp_pkg::ChN:     word_d = WordN;
+                        interp_pkg::ChG:     word_d = WordG;
+                        interp_pkg::ChM:     word_d = WordM;
+                        interp_pkg::ChX:     word_d = WordX;
+                        interp_pkg::ChY:     word_d = WordY;
+                        interp_pkg::ChI:     word_d = WordI;
+                        interp_pkg::ChJ:     word_d = WordJ;
                         default: word_d = WordF;
                       endcase
-                      if (ch == ChN) n_seen_d = 1'b1;
+                      if (ch == interp_pkg::ChN) n_seen_d = 1'b1;
                       any_word_d    = 1'b1;
                       num_state_d   = NumStart;
                       num_d         = '0;
@@ -406,15 +387,15 @@ module tape_decoder #(
                       frac_count_d  = '0;
                       word_offset_d = frame_count_q;
                     end
-                  end else if (ch == ChLf) begin
+                  end else if (ch == interp_pkg::ChLf) begin
                     if (motion_blk_d) begin
                       if (feed_d == '0) begin
                         fail = 1'b1;
-                        fail_code = ErrMissingFeed;
+                        fail_code = interp_pkg::ErrMissingFeed;
                       end else begin
                         // A line waits for the buffer (cleared at the handoff); an arc is
                         // prepared first.
-                        if (motion_d == 2'd1) state_d = StHold;
+                        if (motion_d == interp_pkg::MotionLine) state_d = StHold;
                         else state_d = StArc;
                         k_d = bit_length(dx_d | dy_d);
                       end
@@ -424,14 +405,15 @@ module tape_decoder #(
                       dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
                       dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
                     end
-                  end else if (ch == ChOpen) begin
+                  end else if (ch == interp_pkg::ChOpen) begin
                     state_d = StComment;
-                  end else if (ch == ChPercent) begin
+                  end else if (ch == interp_pkg::ChPercent) begin
                     fail = 1'b1;
-                    fail_code = any_word_q ? ErrMissingEob : ErrTruncated;
+                    fail_code = any_word_q ? interp_pkg::ErrMissingEndOfBlock
+                                           : interp_pkg::ErrTruncatedTape;
                   end else begin
                     fail = 1'b1;
-                    fail_code = ErrUnknownChar;
+                    fail_code = interp_pkg::ErrUnknownCharacter;
                   end
                 end
               end
@@ -462,7 +444,7 @@ module tape_decoder #(
         end
       end else if (tape_cut) begin
         fail = 1'b1;
-        fail_code = ErrTruncated;  // at the offset of the frame that never came
+        fail_code = interp_pkg::ErrTruncatedTape;  // at the offset of the frame that never came
       end
 
       if (fail) begin
@@ -495,7 +477,7 @@ module tape_decoder #(
     .clk_i, .rst_ni, .run_i(in_arc),
     .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
-    .ccw_i(motion_q == 2'd3), .feed_i(feed_q),
+    .ccw_i(motion_q == interp_pkg::MotionArcCcw), .feed_i(feed_q),
     .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .step_o(arc_step),
     .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
   );
@@ -519,7 +501,7 @@ module tape_decoder #(
       frac_count_q  <= '0;
       word_offset_q <= '0;
       n_q           <= '0;
-      motion_q      <= 2'd1;
+      motion_q      <= interp_pkg::MotionLine;
       feed_q        <= '0;
       dx_q <= '0;  dx_neg_q <= 1'b0;
       dy_q <= '0;  dy_neg_q <= 1'b0;
@@ -580,7 +562,7 @@ module tape_decoder #(
   assign blk_dy_neg_o  = dy_neg_q;
   assign blk_i_o       = i_q;
   assign blk_j_o       = j_q;
-  assign blk_step_o    = motion_q == 2'd1 ? StepWidth'(feed_q) << k_q : arc_step;
+  assign blk_step_o    = motion_q == interp_pkg::MotionLine ? StepWidth'(feed_q) << k_q : arc_step;
   assign blk_k_o       = k_q;
   assign blk_grow_x_o  = grow_x_q;
   assign blk_grow_y_o  = grow_y_q;

@@ -8,7 +8,7 @@
 //   feed        arc blocks played by the whole golden interpolator: block time against
 //               1/F, saturation, the decoder's arc preparation against the block time
 // Idea: all numbers come from the same golden classes the interpolator uses
-// (sc_model/golden/circle_dda.h, arc_geometry.h, golden_interp.h), except the scheme
+// (sc_model/golden/dda_circle.h, arc_geometry.h, golden_interp.h), except the scheme
 // study, which needs a free-running circle (sw/tools/circle_study/scheme_study.h).
 #include <CLI/CLI.hpp>
 #include <algorithm>

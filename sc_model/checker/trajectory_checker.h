@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "interp_ports.h"
 #include "line_schedule.h"
 #include "programmed_path.h"

@@ -1,24 +1,17 @@
 // Arc preparation in the decoder (see arc_prepare.h); the steps follow rtl/arc_prepare.sv
-// and rtl/arc_radius_check.sv decision by decision.
+// decision by decision.
 #include "arc_prepare.h"
 
 namespace ncinterp {
 
 namespace {
 
-using u128 = unsigned __int128;
-
-u128 low_mask(unsigned bits) { return (u128{1} << bits) - 1; }
-
-unsigned bit(u128 v, unsigned b) { return static_cast<unsigned>(v >> b) & 1u; }
-
 constexpr uint64_t kStepClamp = uint64_t{1} << 63;
 
 }  // namespace
 
 ArcPrepare::ArcPrepare(unsigned inc_width)
-    : inc_width_(inc_width),
-      check_steps_(2 * inc_width + 3) {
+    : inc_width_(inc_width), radius_(inc_width) {
   reset();
 }
 
@@ -26,9 +19,7 @@ void ArcPrepare::reset() {
   running_ = false;
   dry_ = CircleDda{};
   step_ = 0;
-  count_ = check_steps_;
-  a_ = sq_ = e_ = 0;
-  far_ = false;
+  radius_ = ArcRadiusCheck(inc_width_);
 }
 
 ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
@@ -43,14 +34,12 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
     }
     dry_.load(g_, !w.dx_neg, !w.dy_neg);
     step_ = 0;
-    count_ = 0;
-    a_ = sq_ = e_ = 0;
-    far_ = false;
+    radius_.start();
     running_ = !r.done;
     return r;
   }
-  const bool check_done = count_ == check_steps_;
-  const bool check_ok = !far_ && sq_ <= 4 * a_;
+  const bool check_done = radius_.done();
+  const bool check_ok = radius_.ok();
   if (check_done && (!check_ok || dry_.done())) {
     r.done = true;
     r.error = check_ok ? TapeError::kNone : TapeError::kArcEndpointOffCircle;
@@ -61,26 +50,8 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
     dry_.iterate();
     step_ = step_ + feed < kStepClamp ? step_ + feed : kStepClamp;  // feed < 2^63: no wrap
   }
-  if (!check_done) check_step(g_);
+  if (!check_done) radius_.step(g_);
   return r;
-}
-
-void ArcPrepare::check_step(const ArcGeometry& g) {
-  const unsigned w = inc_width_;
-  if (count_ < w) {
-    const unsigned b = w - 1 - count_;  // MSB first: acc = 2 acc + v * v[b]
-    a_ = 2 * a_ + bit(g.x0, b) * g.x0 + bit(g.y0, b) * g.y0;
-    sq_ = 2 * sq_ + bit(g.x1, b) * g.x1 + bit(g.y1, b) * g.y1;
-  } else if (count_ == w) {
-    const u128 mag = sq_ >= a_ + 1 ? sq_ - a_ - 1 : a_ + 1 - sq_;  // |B - A - 1|
-    far_ = mag >= (u128{1} << (w + 2));
-    e_ = mag & low_mask(w + 2);
-    sq_ = 0;
-  } else {
-    const unsigned b = 2 * w + 2 - count_;
-    sq_ = 2 * sq_ + bit(e_, b) * e_;
-  }
-  ++count_;
 }
 
 }  // namespace ncinterp

@@ -2,9 +2,9 @@
 // clock-by-clock outputs).
 // Idea: before an arc block is handed to the block buffer, the decoder (a) checks it: zero
 // radius, quadrant and register width at once from the geometry, the radius (end within
-// 1 BLU of the circle) with a bit-serial squarer in 2W + 3 clocks; and (b) runs the
-// block's circle DDA once without pulses (a dry run, one iteration per clock) to learn
-// its iteration count N, summing F once per iteration. The block then carries S = F * N,
+// 1 BLU of the circle) serially on one adder in 5W + 5 clocks (ArcRadiusCheck); and (b)
+// runs the block's circle DDA once without pulses (a dry run, one iteration per clock) to
+// learn its iteration count N, summing F once per iteration. The block then carries S = F * N,
 // and the feed generator plays its N iterations in M / F clocks, like the 2^k iterations
 // of a line (docs/circle-dda.md section 4). Both run in parallel; a failed radius check
 // stops the dry run.
@@ -12,7 +12,8 @@
 #include <cstdint>
 
 #include "arc_geometry.h"
-#include "circle_dda.h"
+#include "arc_radius_check.h"
+#include "dda_circle.h"
 #include "interp_ports.h"
 
 namespace ncinterp {
@@ -42,21 +43,13 @@ class ArcPrepare {
   uint64_t step() const { return step_; }
 
  private:
-  void check_step(const ArcGeometry& g);  // one step of the bit-serial radius check
-
   unsigned inc_width_;
-  unsigned check_steps_;     // clocks of the radius check after the start edge (2W + 3)
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   ArcGeometry g_;           // of the arc being prepared, from its start edge
   CircleDda dry_;           // the dry-run DDA
   uint64_t step_ = 0;       // F added once per dry-run iteration: F * N
-  // Bit-serial radius check: count_ steps done; a_ = x0^2 + y0^2; sq_ = x1^2 + y1^2,
-  // then |E|^2 with E = B - A - 1; e_ = |E| (W + 2 bits); far_ = |E| >= 2^(W+2). 128 bits:
-  // the squares of W = 32 magnitudes need 65 bits, |E|^2 up to 68.
-  unsigned count_ = 0;
-  unsigned __int128 a_ = 0, sq_ = 0, e_ = 0;
-  bool far_ = false;
+  ArcRadiusCheck radius_;   // the serial radius check (5W + 5 clocks)
 };
 
 }  // namespace ncinterp

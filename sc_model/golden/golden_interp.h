@@ -1,4 +1,8 @@
-// Golden cycle model of the interpolator: the C++ twin of rtl/interp_top.sv.
+// Golden cycle model of the interpolator: the C++ twin of rtl/interp_top.sv. Twins of the
+// submodules: GoldenTapeDecoder (rtl/tape_decoder.sv), CircleDda (rtl/dda_circle.sv); the
+// small ones are sections of tick() named after them: "Block buffer" (block_buffer.sv),
+// "Feed generator" (feed_generator.sv), "Line DDA" (dda_line.sv, dda_integrator.sv),
+// "Position counters" (position_counter.sv).
 // Idea: one tick() is one rising clock edge. Every register of the RTL exists here with the
 // same reset value and next-state rule (docs/interpolator.md), so after each tick the
 // outputs equal the RTL's outputs after the same edge; the cosim checks this every clock.
@@ -9,7 +13,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "golden_decoder.h"
 #include "interp_ports.h"
 
@@ -104,7 +108,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   out_.step_x = false;
   out_.step_y = false;
   if (busy && !finishing) {
-    // Feed generator: one DDA iteration per strobe.
+    // Feed generator (rtl/feed_generator.sv): one DDA iteration per strobe.
     bool strobe = saturated_;
     if (!strobe) {
       const uint64_t p = phase_ + feed_step_;
@@ -117,6 +121,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
         const CircleDda::Steps s = circle_.iterate();
         carry[0] = s.x, carry[1] = s.y;
       } else {
+        // Line DDA (rtl/dda_line.sv, dda_integrator.sv).
         --rem_;
         for (int a = 0; a < 2; ++a) {
           const uint64_t sum = acc_[a] + inc_[a];
@@ -124,6 +129,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
           acc_[a] = sum & ~kpow_;
         }
       }
+      // Position counters (rtl/position_counter.sv).
       if (carry[0]) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
       if (carry[1]) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));
       out_.step_x = carry[0];
@@ -133,7 +139,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     out_.busy = false;
     out_.feed_saturated = false;
   }
-  if (load) load_block();
+  if (load) load_block();  // Block buffer (rtl/block_buffer.sv) -> player
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
 }

@@ -17,7 +17,7 @@
 #include <optional>
 #include <vector>
 
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "interp_ports.h"
 #include "tape.h"
 
@@ -104,7 +104,7 @@ double distance_to_segment(double px, double py, double dx, double dy);
 
 // A pulse position (px, py), relative to the block's start, against the block's path: the
 // distance to the chord (line) or to the circle through the start (arc), and the bound that
-// distance must keep (line_path_bound, or the circle DDA's bounds in circle_dda.h).
+// distance must keep (line_path_bound, or the circle DDA's bounds in dda_circle.h).
 struct PathError {
   double distance, bound;
 };

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "arc_geometry.h"
-#include "circle_dda.h"
+#include "dda_circle.h"
 
 namespace ncinterp::circle_study {
 

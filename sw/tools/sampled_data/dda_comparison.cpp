@@ -7,7 +7,7 @@
 #include <string>
 
 #include "arc_geometry.h"
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "circle_runs.h"
 
 namespace ncinterp::sampled {

@@ -1,7 +1,7 @@
 // The sampled-data methods against the project's hardware circle DDA on the same arcs: a
 // full quadrant of radius R BLU from (R, 0) clockwise to (0, -R) (G02, I = -R).
 // Idea: hold both to the same result, a path within 1 BLU of the circle, and compare what
-// it costs. The hardware DDA (sc_model/golden/circle_dda.h, the RTL's C++ twin, called
+// it costs. The hardware DDA (sc_model/golden/dda_circle.h, the RTL's C++ twin, called
 // here, not re-implemented) emits one pulse at a time: iterations per quadrant, additions
 // per iteration, k-bit registers. A sampled-data method sends one reference word per
 // period: it takes the largest h (grid 0.1 * 2^(-j/4)) whose double-precision path,
@@ -23,7 +23,7 @@ struct DdaQuadrant {
   uint64_t pulses = 0;              // both axes
   double max_radial_error_blu = 0;  // at every position after a pulse
   // Per iteration: two integrator additions, and per pulse a magnitude increment or
-  // decrement and a counter decrement (circle_dda.h), measured from the pulse count.
+  // decrement and a counter decrement (dda_circle.h), measured from the pulse count.
   double additions_per_iteration() const;
 };
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "interp_ports.h"
 #include "interp_test_support.h"
 #include "tape.h"

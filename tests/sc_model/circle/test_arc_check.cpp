@@ -125,7 +125,7 @@ TEST(ArcGeometry, LoadsMagnitudesGrowthCountsAndModulus) {
 }
 
 // The decoder's arc preparation: same verdict as check_arc(), S = F * N with N the golden
-// DDA's iteration count, and done in the clock after max(N, 2W + 3) run edges.
+// DDA's iteration count, and done in the clock after max(N, 5W + 5) run edges.
 void expect_prepare(const QuadrantArc& a, unsigned w, uint64_t feed) {
   ArcPrepare prep(w);
   const ArcWords words = a.words();
@@ -144,7 +144,7 @@ void expect_prepare(const QuadrantArc& a, unsigned w, uint64_t feed) {
     return;
   }
   const circle_study::ArcRunStats run = circle_study::run_arc(a, w, 1u << 20);
-  const uint64_t check_steps = 2 * w + 3;
+  const uint64_t check_steps = ArcRadiusCheck::clocks(w);  // 5W + 5
   if (want == TapeError::kNone) {
     EXPECT_EQ(prep.step(), feed * run.iterations) << a.describe();
     EXPECT_EQ(calls, 2 + std::max(run.iterations, check_steps)) << a.describe();

@@ -10,7 +10,7 @@
 #include <random>
 
 #include "arc_geometry.h"
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "arc_cases.h"
 
 namespace ncinterp {

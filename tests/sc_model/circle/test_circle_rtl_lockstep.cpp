@@ -13,7 +13,7 @@
 #include "Vdda_circle.h"
 #include "arc_geometry.h"
 #include "arc_prepare.h"
-#include "circle_dda.h"
+#include "dda_circle.h"
 #include "arc_cases.h"
 #include "verilated.h"
 

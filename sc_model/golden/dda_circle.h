@@ -1,5 +1,7 @@
-// Circle DDA of one quadrant arc: the C++ twin of rtl/dda_circle.sv (register for register;
-// the one-clock step registers are the caller's outputs, as in GoldenInterp).
+// Circle DDA of one quadrant arc: the C++ twin of rtl/dda_circle.sv (the same values every
+// clock; the RTL keeps the two axes by role, A = first in the next iteration, and swaps
+// them after each iteration, this model keeps them by name with y_first_ = a_is_y_q; the
+// one-clock step registers are the caller's outputs, as in GoldenInterp).
 // Idea (docs/circle-dda.md): two cross-coupled integrators with modulus 2^k. The X
 // integrator adds |y| and the Y integrator adds |x| (coordinates relative to the centre);
 // a carry is a step of that axis, which moves its own magnitude by one BLU, so the other

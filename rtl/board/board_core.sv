@@ -1,0 +1,193 @@
+// Board core: the interpolator fed by a serial tape reader, with stepper-driver outputs,
+// LEDs and status lines; everything of a board except its pins and its clock/reset.
+//
+// What: uart_rx -> byte_fifo -> interp_top (rtl/interp_top.sv) -> step_stretcher per axis,
+// and status_line on the TX line. Each received byte is one tape frame (bit 7 = ISO 840
+// parity). The EOT frame (0x84: EOT with its parity bit) ends the tape: it drives
+// interp_top's tape_end_i, so the program is done after M02/M30, and a tape cut short
+// before that is an error, as on a real reader. Flow control (docs/board.md): cts_no (to
+// the host UART's CTS#, active low) goes high while the FIFO holds CtsStopLevel bytes or
+// more, and XOFF / XON go out on TX when the level crosses XoffLevel / XonLevel.
+// Board errors join the interpolator's (error LED and an "E" status line): 0x10 the FIFO
+// overflowed (flow control failed), 0x11 a UART framing error, 0x12 a step pulse was lost
+// (steps faster than the driver timing allows); their block is the current block_n and
+// their offset the number of bytes received (modulo 2^16).
+// The obs_* ports show interp_top's own outputs, the FIFO level and the received bytes to the board simulation (board-sim) and
+// are left unconnected on a real board. Static configuration comes in on ports (the board
+// tops tie them to constants): bit_cycles_i clocks per UART bit, feed_modulus_i, and the
+// stretcher's clock counts.
+// Timing: every output is a register or a function of registers.
+module board_core #(
+  parameter int FifoAddrWidth = 8,
+  parameter int CtsStopLevel  = 240,
+  parameter int XoffLevel     = 128,
+  parameter int XonLevel      = 32,
+  // UART bit clock counter (bit_cycles_i >= 4) and step timing counters: narrow enough
+  // to leave room for the interpolator on the part (12 MHz: >= 2930 baud, <= 21 us).
+  parameter int DivWidth      = 12,
+  parameter int StretchWidth  = 8
+) (
+  input  logic        clk_i,
+  input  logic        rst_ni,
+  input  logic [DivWidth-1:0] bit_cycles_i,
+  input  logic [47:0] feed_modulus_i,
+  input  logic [StretchWidth-1:0] setup_cycles_i,
+  input  logic [StretchWidth-1:0] pulse_cycles_i,
+  input  logic [StretchWidth-1:0] low_cycles_i,
+  // UART to the host.
+  input  logic        rx_i,
+  output logic        tx_o,
+  output logic        cts_no,
+  // Stepper drivers.
+  output logic        step_x_o,
+  output logic        dir_x_o,
+  output logic        step_y_o,
+  output logic        dir_y_o,
+  // LEDs (active high).
+  output logic        led_busy_o,
+  output logic        led_done_o,
+  output logic        led_error_o,
+  // The interpolator's outputs, for the board simulation.
+  output logic        obs_frame_ready_o,
+  output logic        obs_step_x_o,
+  output logic        obs_dir_x_o,
+  output logic        obs_step_y_o,
+  output logic        obs_dir_y_o,
+  output logic [31:0] obs_pos_x_o,
+  output logic [31:0] obs_pos_y_o,
+  output logic [19:0] obs_block_n_o,
+  output logic        obs_busy_o,
+  output logic        obs_done_o,
+  output logic        obs_error_o,
+  output logic [3:0]  obs_error_code_o,
+  output logic [19:0] obs_error_block_o,
+  output logic [31:0] obs_error_offset_o,
+  output logic        obs_feed_saturated_o,
+  output logic [FifoAddrWidth:0] obs_fifo_level_o,
+  output logic [7:0]  obs_rx_data_o,
+  output logic        obs_rx_valid_o,
+  output logic [7:0]  board_error_code_o
+);
+
+  localparam logic [7:0] EotFrame = 8'h84;
+
+  logic [7:0]             rx_data, fifo_data;
+  logic                   rx_valid, rx_ferr, fifo_valid, fifo_ready, overflow;
+  logic [FifoAddrWidth:0] level;
+  logic                   frame_ready, frame_valid, eot;
+  logic                   overrun_x, overrun_y;
+  logic                   i_step_x, i_dir_x, i_step_y, i_dir_y, i_busy, i_done, i_error, i_sat;
+  logic [31:0]            i_pos_x, i_pos_y, i_error_offset;
+  logic [19:0]            i_block_n, i_error_block;
+  logic [3:0]             i_error_code;
+
+  // tape_end_q: the EOT frame has been read. xoff_q: the host has been asked to stop.
+  // cts_n_q: CTS# to the host. rx_count_q: bytes received. board_err_q: board error code.
+  logic                   tape_end_q, xoff_q, cts_n_q;
+  logic [15:0]            rx_count_q;
+  logic [7:0]             board_err_q;
+
+  uart_rx #(.DivWidth(DivWidth)) u_rx (
+    .clk_i, .rst_ni, .bit_cycles_i, .rx_i,
+    .data_o(rx_data), .valid_o(rx_valid), .frame_error_o(rx_ferr)
+  );
+
+  byte_fifo #(.AddrWidth(FifoAddrWidth)) u_fifo (
+    .clk_i, .rst_ni, .in_data_i(rx_data), .in_valid_i(rx_valid),
+    .out_data_o(fifo_data), .out_valid_o(fifo_valid), .out_ready_i(fifo_ready),
+    .level_o(level), .overflow_o(overflow)
+  );
+
+  // The EOT frame is taken by the board, never shown to the decoder.
+  assign eot         = fifo_valid && fifo_data == EotFrame;
+  assign frame_valid = fifo_valid && !eot && !tape_end_q;
+  assign fifo_ready  = eot || (frame_ready && !tape_end_q);
+
+  interp_top u_interp (
+    .clk_i, .rst_ni,
+    .feed_modulus_i,
+    .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
+    .frame_ready_o(frame_ready),
+    .step_x_o(i_step_x), .dir_x_o(i_dir_x), .step_y_o(i_step_y), .dir_y_o(i_dir_y),
+    .pos_x_o(i_pos_x), .pos_y_o(i_pos_y),
+    .block_n_o(i_block_n), .busy_o(i_busy), .done_o(i_done), .error_o(i_error),
+    .error_code_o(i_error_code), .error_block_o(i_error_block),
+    .error_offset_o(i_error_offset), .feed_saturated_o(i_sat)
+  );
+
+  step_stretcher #(.CountWidth(StretchWidth)) u_stretch_x (
+    .clk_i, .rst_ni, .setup_cycles_i, .pulse_cycles_i, .low_cycles_i,
+    .step_i(i_step_x), .dir_i(i_dir_x), .step_o(step_x_o), .dir_o(dir_x_o),
+    .overrun_o(overrun_x)
+  );
+
+  step_stretcher #(.CountWidth(StretchWidth)) u_stretch_y (
+    .clk_i, .rst_ni, .setup_cycles_i, .pulse_cycles_i, .low_cycles_i,
+    .step_i(i_step_y), .dir_i(i_dir_y), .step_o(step_y_o), .dir_o(dir_y_o),
+    .overrun_o(overrun_y)
+  );
+
+  logic        any_error;
+  logic [7:0]  line_code;
+  logic [19:0] line_block;
+  logic [31:0] line_offset;
+  assign any_error   = i_error || board_err_q != '0;
+  assign line_code   = board_err_q != '0 ? board_err_q : {4'd0, i_error_code};
+  assign line_block  = board_err_q != '0 ? i_block_n : i_error_block;
+  assign line_offset = board_err_q != '0 ? {16'd0, rx_count_q} : i_error_offset;
+
+  status_line #(.DivWidth(DivWidth)) u_status (
+    .clk_i, .rst_ni, .bit_cycles_i,
+    .block_n_i(i_block_n), .busy_i(i_busy), .done_i(i_done), .error_i(any_error),
+    .error_code_i(line_code), .error_block_i(line_block), .error_offset_i(line_offset),
+    .pos_x_i(i_pos_x), .pos_y_i(i_pos_y), .xoff_i(xoff_q), .tx_o
+  );
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      tape_end_q  <= 1'b0;
+      xoff_q      <= 1'b0;
+      cts_n_q     <= 1'b1;
+      rx_count_q  <= '0;
+      board_err_q <= '0;
+    end else begin
+      if (eot) tape_end_q <= 1'b1;
+      if (rx_valid) rx_count_q <= rx_count_q + 1'b1;
+      if (level >= (FifoAddrWidth + 1)'(XoffLevel)) xoff_q <= 1'b1;
+      else if (level <= (FifoAddrWidth + 1)'(XonLevel)) xoff_q <= 1'b0;
+      cts_n_q <= level >= (FifoAddrWidth + 1)'(CtsStopLevel);
+      // The first board error is kept.
+      if (board_err_q == '0) begin
+        if (overflow) board_err_q <= 8'h10;
+        else if (rx_ferr) board_err_q <= 8'h11;
+        else if (overrun_x || overrun_y) board_err_q <= 8'h12;
+      end
+    end
+  end
+
+  assign cts_no      = cts_n_q;
+  assign led_busy_o  = i_busy;
+  assign led_done_o  = i_done;
+  assign led_error_o = any_error;
+
+  assign obs_frame_ready_o    = frame_ready;
+  assign obs_step_x_o         = i_step_x;
+  assign obs_dir_x_o          = i_dir_x;
+  assign obs_step_y_o         = i_step_y;
+  assign obs_dir_y_o          = i_dir_y;
+  assign obs_pos_x_o          = i_pos_x;
+  assign obs_pos_y_o          = i_pos_y;
+  assign obs_block_n_o        = i_block_n;
+  assign obs_busy_o           = i_busy;
+  assign obs_done_o           = i_done;
+  assign obs_error_o          = i_error;
+  assign obs_error_code_o     = i_error_code;
+  assign obs_error_block_o    = i_error_block;
+  assign obs_error_offset_o   = i_error_offset;
+  assign obs_feed_saturated_o = i_sat;
+  assign obs_fifo_level_o     = level;
+  assign obs_rx_data_o        = rx_data;
+  assign obs_rx_valid_o       = rx_valid;
+  assign board_error_code_o   = board_err_q;
+
+endmodule

@@ -1,0 +1,74 @@
+// Pin-level board top shared by the iCEstick and the iCEBreaker: board_core with its
+// static configuration computed from the board clock and the user's parameters, a
+// power-on reset, and the pins named as in rtl/board/<board>.pcf.
+//
+// What: the board's oscillator clocks everything directly (no PLL: 12 MHz is ample for
+// the interpolator, docs/board.md), and feed_modulus = 60 * ClockHz * 10^3 makes every
+// block last its programmed 1/F minute. The reset is held for 15 clocks after
+// configuration (the iCE40's flip-flops start at their initial values). LEDs are active
+// high or low (LedActiveLow); step/dir go to the PMOD header.
+// Step timing parameters (ns) and what drivers need (docs/board.md): DRV8825 STEP high and
+// low >= 1.9 us, DIR setup and hold >= 650 ns; TB6600 (TB67S109-based modules) pulse >= 2.5 us,
+// DIR >= 5 us ahead of the pulse. The defaults suit the DRV8825 (2 us pulse, 1 us setup).
+module board_top #(
+  parameter int     ClockHz    = 12_000_000,
+  parameter int     Baud       = 115_200,
+  parameter int     PulseNs    = 2_000,
+  parameter int     LowNs      = 2_000,
+  parameter int     DirSetupNs = 1_000,
+  parameter int     DirHoldNs  = 1_000,
+  // The iCEBreaker's LEDs light on a low pin, the iCEstick's on a high one.
+  parameter int     LedActiveLow = 0
+) (
+  input  logic clk_i,
+  input  logic uart_rx_i,
+  output logic uart_tx_o,
+  output logic uart_cts_no,
+  output logic step_x_o,
+  output logic dir_x_o,
+  output logic step_y_o,
+  output logic dir_y_o,
+  output logic led_busy_o,
+  output logic led_done_o,
+  output logic led_error_o
+);
+
+  `include "board_timing.svh"
+
+  localparam logic [15:0] BitCycles   = baud_to_cycles(Baud, ClockHz);
+  localparam logic [15:0] PulseCycles = ns_to_cycles(PulseNs, ClockHz);
+  localparam logic [15:0] SetupCycles = ns_to_cycles(DirSetupNs, ClockHz);
+  // dir_o is held pulse + low clocks after the rising edge: low covers what hold needs.
+  localparam logic [15:0] HoldLow     = ns_to_cycles(DirHoldNs, ClockHz) > PulseCycles ?
+                                        ns_to_cycles(DirHoldNs, ClockHz) - PulseCycles : 16'd1;
+  localparam logic [15:0] LowCycles   = ns_to_cycles(LowNs, ClockHz) > HoldLow ?
+                                        ns_to_cycles(LowNs, ClockHz) : HoldLow;
+  localparam logic [47:0] FeedModulus = 48'(64'(ClockHz) * 64'd60_000);
+
+  // por_q: counts clocks after configuration; the core leaves reset when it saturates.
+  logic [3:0] por_q = '0;
+  always_ff @(posedge clk_i) if (por_q != 4'hf) por_q <= por_q + 1'b1;
+
+  logic led_busy, led_done, led_error;
+  localparam logic LedLow = LedActiveLow != 0;
+  assign led_busy_o  = led_busy ^ LedLow;
+  assign led_done_o  = led_done ^ LedLow;
+  assign led_error_o = led_error ^ LedLow;
+
+  /* verilator lint_off PINCONNECTEMPTY */
+  board_core u_core (
+    .clk_i, .rst_ni(por_q == 4'hf),
+    .bit_cycles_i(12'(BitCycles)), .feed_modulus_i(FeedModulus),
+    .setup_cycles_i(8'(SetupCycles)), .pulse_cycles_i(8'(PulseCycles)),
+    .low_cycles_i(8'(LowCycles)),
+    .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),
+    .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
+    .led_busy_o(led_busy), .led_done_o(led_done), .led_error_o(led_error),
+    .obs_frame_ready_o(), .obs_step_x_o(), .obs_dir_x_o(), .obs_step_y_o(), .obs_dir_y_o(),
+    .obs_pos_x_o(), .obs_pos_y_o(), .obs_block_n_o(), .obs_busy_o(), .obs_done_o(),
+    .obs_error_o(), .obs_error_code_o(), .obs_error_block_o(), .obs_error_offset_o(),
+    .obs_feed_saturated_o(), .obs_fifo_level_o(), .obs_rx_data_o(), .obs_rx_valid_o(), .board_error_code_o()
+  );
+  /* verilator lint_on PINCONNECTEMPTY */
+
+endmodule

@@ -1,0 +1,97 @@
+// Golden twin of rtl/board/step_stretcher.sv: the step pulse stretcher of one axis.
+// Idea: the RTL's phases (IDLE, SETUP, HIGH, LOW), clock counter and one-deep pulse buffer
+// with the same update rules, compared every clock by
+// tests/sc_model/board/test_board_lockstep.cpp.
+#pragma once
+#include <cstdint>
+
+namespace ncinterp::board {
+
+struct StretcherTiming {
+  uint16_t setup_cycles = 1, pulse_cycles = 1, low_cycles = 1;  // each >= 1
+};
+
+class StepStretcherModel {
+ public:
+  void reset() { *this = StepStretcherModel(); }
+
+  bool step() const { return step_; }
+  bool dir() const { return dir_; }
+  bool overrun() const { return overrun_; }
+
+  // One rising edge with the interpolator's step and dir.
+  void tick(bool step_in, bool dir_in, const StretcherTiming& t) {
+    Phase phase = phase_;
+    uint16_t count = count_;
+    bool step = step_, dir = dir_;
+    bool take = false, took_pend = false, take_dir = dir_in;
+    switch (phase_) {
+      case Phase::kIdle:
+        if (pend_) {
+          take = took_pend = true;
+          take_dir = pend_dir_;
+        } else if (step_in) {
+          take = true;
+        }
+        if (take) {
+          if (take_dir != dir_) {
+            dir = take_dir;
+            phase = Phase::kSetup;
+            count = static_cast<uint16_t>(t.setup_cycles - 1);
+          } else {
+            step = true;
+            phase = Phase::kHigh;
+            count = static_cast<uint16_t>(t.pulse_cycles - 1);
+          }
+        }
+        break;
+      case Phase::kSetup:
+        if (count_ != 0) {
+          --count;
+        } else {
+          step = true;
+          phase = Phase::kHigh;
+          count = static_cast<uint16_t>(t.pulse_cycles - 1);
+        }
+        break;
+      case Phase::kHigh:
+        if (count_ != 0) {
+          --count;
+        } else {
+          step = false;
+          phase = Phase::kLow;
+          count = static_cast<uint16_t>(t.low_cycles - 1);
+        }
+        break;
+      case Phase::kLow:
+        if (count_ != 0) --count;
+        else phase = Phase::kIdle;
+        break;
+    }
+    bool pend = pend_ && !took_pend, pend_dir = pend_dir_, overrun = false;
+    if (step_in && !(take && !took_pend)) {
+      if (pend) {
+        overrun = true;
+      } else {
+        pend = true;
+        pend_dir = dir_in;
+      }
+    }
+    phase_ = phase;
+    count_ = count;
+    step_ = step;
+    dir_ = dir;
+    pend_ = pend;
+    pend_dir_ = pend_dir;
+    overrun_ = overrun;
+  }
+
+ private:
+  enum class Phase { kIdle, kSetup, kHigh, kLow };
+  Phase phase_ = Phase::kIdle;
+  uint16_t count_ = 0;
+  bool pend_ = false, pend_dir_ = false;
+  bool step_ = false, dir_ = false, overrun_ = false;
+};
+
+}  // namespace ncinterp::board

@@ -1,0 +1,60 @@
+// `ncinterp bitstream --board icestick|icebreaker -o X.bin [--work-dir D]`: the board's
+// bitstream from the repository's RTL (rtl/board/board_top.sv and the interpolator) and
+// .pcf (sw/tools/bitstream/bitstream.h). Prints the logic cells used and the Fmax against the
+// board clock; exit 1 with one clear line when the design does not fit, misses the board
+// clock or a tool fails (the tools' logs stay in the work directory).
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "bitstream.h"
+#include "command_registry.h"
+
+namespace ncinterp::cli {
+namespace {
+
+struct BitstreamArgs {
+  std::string board, out, work_dir;
+  unsigned seeds = 5;
+};
+
+int run(const BitstreamArgs& a) {
+  const bitstream::BoardTarget target = bitstream::board_target(a.board);
+  const std::string work =
+      a.work_dir.empty() ? std::filesystem::path(a.out).string() + ".build" : a.work_dir;
+  const bitstream::BitstreamResult r = bitstream::build_bitstream(target, a.out, work, a.seeds);
+  if (!r.ok) {
+    std::cerr << "ncinterp bitstream: " << r.message << "\n";
+    return 1;
+  }
+  std::printf("%s\nbitstream: %s (logs in %s)\n", r.message.c_str(), a.out.c_str(), r.work_dir.c_str());
+  return 0;
+}
+
+void setup(CLI::App& app) {
+  auto args = std::make_shared<BitstreamArgs>();
+  CLI::App* cmd = app.add_subcommand("bitstream", "Build a board's bitstream (yosys, nextpnr-ice40, icepack)");
+  cmd->add_option("--board", args->board, "Board: icestick (HX1K) or icebreaker (UP5K)")
+      ->check(CLI::IsMember({"icestick", "icebreaker"}))
+      ->required();
+  cmd->add_option("-o,--output", args->out, "Bitstream file (.bin, for iceprog)")->required();
+  cmd->add_option("--seeds", args->seeds, "Placement seeds to try until one meets the board clock")
+      ->check(CLI::Range(1u, 100u))
+      ->capture_default_str();
+  cmd->add_option("--work-dir", args->work_dir, "Netlists and tool logs (default: OUTPUT.build)");
+  cmd->callback([args] {
+    int code;
+    try {
+      code = run(*args);
+    } catch (const std::exception& e) {
+      std::cerr << "ncinterp bitstream: " << e.what() << "\n";
+      code = 1;
+    }
+    if (code != 0) throw CommandExit{code};
+  });
+}
+
+const CommandRegistration registration("bitstream", setup);
+
+}  // namespace
+}  // namespace ncinterp::cli

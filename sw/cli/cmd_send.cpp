@@ -1,0 +1,197 @@
+// `ncinterp send TAPE --port DEV [--baud B] [--flow rtscts|xonxoff]`: punches a tape into a
+// board over a serial port (docs/board.md): the tape's frames, then the EOT frame that ends
+// the tape, with flow control; prints the board's status lines in words and exits with the
+// board's verdict.
+// Idea: termios only. The port is raw 8N1 at the baud rate; CRTSCTS (the USB-serial chip
+// stops before a byte while the board holds CTS# high) or IXON (the chip stops on the
+// board's XOFF until XON) does the flow control, so a plain write loop never overruns the
+// board. XON/XOFF bytes are dropped from what the board sends; every other line is a status
+// line (rtl/board/status_line.sv). Progress goes to stderr, only on a terminal. Exit 0 when
+// the board reports the program done; 1 with "TAPE: block N, offset K: message" when it
+// reports an error (the software reader's wording when it finds the same error), when the
+// port closes or the board stays silent longer than --timeout, or on unusable options.
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+#include "command_registry.h"
+#include "play_run.h"
+#include "status_text.h"
+#include "tape.h"
+
+namespace ncinterp::cli {
+namespace {
+
+struct SendArgs {
+  std::string tape, port, flow = "rtscts";
+  unsigned baud = 115200;
+  double timeout_s = 600;
+};
+
+speed_t speed_for(unsigned baud) {
+  static const std::map<unsigned, speed_t> speeds = {
+      {9600, B9600},     {19200, B19200},     {38400, B38400},     {57600, B57600},
+      {115200, B115200}, {230400, B230400},   {460800, B460800},   {500000, B500000},
+      {921600, B921600}, {1000000, B1000000}, {2000000, B2000000}, {3000000, B3000000}};
+  const auto it = speeds.find(baud);
+  if (it == speeds.end()) throw std::runtime_error("--baud " + std::to_string(baud) + " is not a standard termios rate");
+  return it->second;
+}
+
+// The port, raw 8N1 with the flow control asked for; closed on destruction.
+class Port {
+ public:
+  Port(const std::string& path, speed_t speed, bool rtscts) {
+    fd_ = open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    if (fd_ < 0) throw std::runtime_error(path + ": " + std::strerror(errno));
+    termios t{};
+    if (tcgetattr(fd_, &t) != 0) {
+      close(fd_);
+      throw std::runtime_error(path + ": not a serial port (" + std::string(std::strerror(errno)) + ")");
+    }
+    cfmakeraw(&t);
+    cfsetispeed(&t, speed);
+    cfsetospeed(&t, speed);
+    t.c_cflag |= CLOCAL | CREAD;
+    t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | PARENB);
+    if (rtscts) t.c_cflag |= CRTSCTS;
+    else t.c_iflag |= IXON;
+    if (tcsetattr(fd_, TCSANOW, &t) != 0) {
+      close(fd_);
+      throw std::runtime_error(path + ": cannot set the line (" + std::string(std::strerror(errno)) + ")");
+    }
+    tcflush(fd_, TCIOFLUSH);
+  }
+  ~Port() { close(fd_); }
+  Port(const Port&) = delete;
+  Port& operator=(const Port&) = delete;
+  int fd() const { return fd_; }
+
+ private:
+  int fd_ = -1;
+};
+
+int run(const SendArgs& a) {
+  const speed_t speed = speed_for(a.baud);
+  std::vector<uint8_t> frames = tape::load_frames(a.tape);
+  const size_t tape_frames = frames.size();
+  frames.push_back(board::kEndOfTapeFrame);
+  const unsigned frac_digits = system::play_config(12e6).frac_digits;
+  Port port(a.port, speed, a.flow == "rtscts");
+  const bool tty = isatty(STDERR_FILENO);
+
+  size_t sent = 0;
+  std::string line;
+  std::string last_block = "-";
+  auto last_heard = std::chrono::steady_clock::now();
+  auto last_progress = last_heard - std::chrono::seconds(1);
+  bool progress_shown = false;
+  const auto clear_progress = [&] {
+    if (progress_shown) std::fprintf(stderr, "\r%70s\r", "");
+    progress_shown = false;
+  };
+  for (;;) {
+    pollfd p{port.fd(), static_cast<short>(POLLIN | (sent < frames.size() ? POLLOUT : 0)), 0};
+    if (poll(&p, 1, 200) < 0 && errno != EINTR) throw std::runtime_error(a.port + ": " + std::strerror(errno));
+    if ((p.revents & POLLOUT) && sent < frames.size()) {
+      const size_t chunk = std::min<size_t>(64, frames.size() - sent);
+      const ssize_t w = write(port.fd(), frames.data() + sent, chunk);
+      if (w > 0) sent += static_cast<size_t>(w);
+      else if (w < 0 && errno != EAGAIN && errno != EINTR)
+        throw std::runtime_error(a.port + ": write: " + std::strerror(errno));
+    }
+    if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
+      uint8_t buf[256];
+      const ssize_t n = read(port.fd(), buf, sizeof buf);
+      if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
+        clear_progress();
+        std::cerr << a.tape << ": " << a.port << " closed before the board reported the end of the program\n";
+        return 1;
+      }
+      if (n > 0) last_heard = std::chrono::steady_clock::now();
+      for (ssize_t i = 0; i < n; ++i) {
+        const uint8_t b = buf[i];
+        if (b == board::kXon || b == board::kXoff || b == '\r') continue;
+        if (b != '\n') {
+          line += static_cast<char>(b);
+          continue;
+        }
+        clear_progress();
+        const std::optional<board::StatusLine> s = board::parse_status_line(line);
+        if (!s) {
+          std::printf("board: %s\n", line.c_str());
+        } else if (s->kind == 'E') {
+          std::fflush(stdout);
+          // The software reader's words for the same error, if it finds it.
+          const tape::ParseResult rb = tape::parse_frames_partial(
+              std::vector<uint8_t>(frames.begin(), frames.begin() + static_cast<long>(tape_frames)),
+              system::tape_format_for(system::play_config(12e6)));
+          const bool same = rb.error && rb.error->code == s->code && rb.error->block == s->block &&
+                            rb.error->offset == s->offset;
+          std::cerr << a.tape << ": block N" << s->block << ", offset " << s->offset << ": "
+                    << (same ? rb.error->message : board::board_error_message(s->code)) << "\n";
+          return 1;
+        } else {
+          std::printf("%s\n", board::describe(*s, frac_digits).c_str());
+          std::fflush(stdout);
+          last_block = "N" + std::to_string(s->block);
+          if (s->kind == 'D') {
+            std::printf("%s: %zu frames sent\n", a.tape.c_str(), tape_frames);
+            return 0;
+          }
+        }
+        line.clear();
+      }
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_heard > std::chrono::duration<double>(a.timeout_s) && sent == frames.size()) {
+      clear_progress();
+      std::cerr << a.tape << ": the board said nothing for " << a.timeout_s << " s (last block "
+                << last_block << ")\n";
+      return 1;
+    }
+    if (tty && now - last_progress > std::chrono::milliseconds(200)) {
+      last_progress = now;
+      std::fprintf(stderr, "\rsend: %zu of %zu frames, last block ended %s   ",
+                   std::min(sent, tape_frames), tape_frames, last_block.c_str());
+      progress_shown = true;
+    }
+  }
+}
+
+void setup(CLI::App& app) {
+  auto args = std::make_shared<SendArgs>();
+  CLI::App* cmd = app.add_subcommand("send", "Send a tape to a board over a serial port");
+  cmd->add_option("tape", args->tape, "Tape: .tape (frames with parity) or plain text (.nc)")->required();
+  cmd->add_option("--port", args->port, "Serial port (/dev/ttyUSB1, or board-sim's --pty link)")->required();
+  cmd->add_option("--baud", args->baud, "Baud rate (the board's)")->capture_default_str();
+  cmd->add_option("--flow", args->flow, "Flow control: rtscts (iCEstick) or xonxoff")
+      ->check(CLI::IsMember({"rtscts", "xonxoff"}))
+      ->capture_default_str();
+  cmd->add_option("--timeout", args->timeout_s, "Give up when the board is silent this long after the tape, s")
+      ->capture_default_str();
+  cmd->callback([args] {
+    int code;
+    try {
+      code = run(*args);
+    } catch (const std::exception& e) {
+      std::cerr << "ncinterp send: " << e.what() << "\n";
+      code = 1;
+    }
+    if (code != 0) throw CommandExit{code};
+  });
+}
+
+const CommandRegistration registration("send", setup);
+
+}  // namespace
+}  // namespace ncinterp::cli

@@ -1,0 +1,181 @@
+// The virtual board end to end, through a real pseudo-terminal: `ncinterp board-sim`
+// (verilated board core, UART included) fed by `ncinterp send`, against `ncinterp play` on
+// the same tape: the same pulses and final position on the bundled examples (lines and
+// arcs); a flipped parity bit makes send fail naming the block, with no pulse from that
+// block; flow control engaged (RTS/CTS and XON/XOFF) with no frame lost, also on blocks too
+// short for the line to keep ahead.
+// The board runs at 1 MHz and 115200 baud (9 clocks per bit) instead of 12 MHz: the same
+// RTL and the same clock/baud relation, an eighth of the clocks to simulate (CI time).
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "cli_test.h"
+#include "tape.h"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kExamples = NCINTERP_EXAMPLES_DIR;
+const char* const kClock = "1e6";
+
+class BoardCli : public ncinterp::test::CliTest {
+ protected:
+  // Starts board-sim in the background on path("tty"), waits for its pty link.
+  void start_board(const std::string& args) {
+    const std::string cmd = std::string(NCINTERP_BINARY) + " board-sim --pty " + path("tty") +
+                            " --clock-hz " + kClock + " --idle-timeout 60 --report " + path("board.json") + " " +
+                            args + " >" + path("board.out") + " 2>" + path("board.err");
+    const char* argv[] = {"/bin/sh", "-c", cmd.c_str(), nullptr};
+    ASSERT_EQ(posix_spawn(&board_pid_, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
+    for (int i = 0; i < 300 && !fs::is_symlink(path("tty")); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    ASSERT_TRUE(fs::is_symlink(path("tty"))) << slurp(path("board.err"));
+  }
+  // Waits for board-sim; returns its exit status and its report.
+  int finish_board() {
+    int status = 0;
+    waitpid(board_pid_, &status, 0);
+    board_pid_ = 0;
+    board_err_ = slurp(path("board.err"));
+    if (fs::exists(path("board.json"))) board_ = nlohmann::json::parse(slurp(path("board.json")));
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  void TearDown() override {
+    if (board_pid_) {
+      kill(board_pid_, SIGTERM);
+      waitpid(board_pid_, nullptr, 0);
+    }
+    CliTest::TearDown();
+  }
+  nlohmann::json play(const std::string& tape) {
+    EXPECT_EQ(run("play " + tape + " --clock-hz " + kClock + " --report " + path("play.json")), 0) << stderr_;
+    return nlohmann::json::parse(slurp(path("play.json")));
+  }
+  // The tape through send -> board-sim; returns send's exit status.
+  int send_to_board(const std::string& tape, const std::string& board_args, const std::string& send_args) {
+    start_board(board_args);
+    const int code = run("send " + tape + " --port " + path("tty") + " --timeout 60 " + send_args);
+    send_out_ = stdout_;
+    send_err_ = stderr_;
+    board_code_ = finish_board();
+    return code;
+  }
+  void expect_same_motion(const nlohmann::json& p) {
+    EXPECT_EQ(board_["pulses"], p["pulses"]);
+    EXPECT_EQ(board_["final_position_blu"], p["final_position_blu"]);
+    EXPECT_EQ(board_["blocks"], p["blocks"]);
+    EXPECT_EQ(board_["status"], p["status"]);
+    EXPECT_EQ(board_["path_within_bound"], p["path_within_bound"]);
+  }
+
+  pid_t board_pid_ = 0;
+  int board_code_ = -1;
+  nlohmann::json board_;
+  std::string board_err_, send_out_, send_err_;
+};
+
+TEST_F(BoardCli, GearLinesThroughThePtyMatchPlay) {
+  const std::string tape = kExamples + "/gear.nc";
+  const nlohmann::json p = play(tape);
+  ASSERT_EQ(send_to_board(tape, "--board icestick", "--flow rtscts"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  EXPECT_EQ(board_["frames_read"], p["frames"]);  // no frame lost
+  EXPECT_EQ(board_["board"]["board_error"], 0);
+  // The line is faster than the gear's blocks play: the FIFO filled and CTS# held the
+  // sender back.
+  EXPECT_GT(board_["board"]["flow_hold_cycles"].get<uint64_t>(), 0u);
+  EXPECT_NE(send_out_.find("program done after block N48"), std::string::npos) << send_out_;
+  EXPECT_NE(send_out_.find("block N1 ended"), std::string::npos) << send_out_;
+}
+
+TEST_F(BoardCli, CircleArcsThroughThePtyMatchPlay) {
+  const std::string tape = kExamples + "/circle_r50.nc";
+  const nlohmann::json p = play(tape);
+  ASSERT_EQ(send_to_board(tape, "--board icestick", "--flow rtscts"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  EXPECT_EQ(board_["frames_read"], p["frames"]);
+  EXPECT_EQ(board_["final_position_blu"]["x"], 0);
+}
+
+TEST_F(BoardCli, XonXoffFlowControlLosesNoFrame) {
+  const std::string tape = kExamples + "/gear.nc";
+  const nlohmann::json p = play(tape);
+  ASSERT_EQ(send_to_board(tape, "--board icebreaker", "--flow xonxoff"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  EXPECT_EQ(board_["board"]["flow"], "xonxoff");
+  EXPECT_GT(board_["board"]["xoff_sent"].get<uint64_t>(), 0u);
+  EXPECT_EQ(board_["frames_read"], p["frames"]);
+}
+
+TEST_F(BoardCli, ShortBlocksTheLineCannotKeepAheadOfLoseNoFrame) {
+  // 300 one-step blocks at a high feed: each plays in far less time than its ~30 frames
+  // take on the line, so the interpolator waits for the reader (gaps), never the reverse.
+  std::string text = "%\nG17 G21 G91 G93\n";
+  for (int n = 1; n <= 300; ++n)
+    text += "N" + std::to_string(n) + " G01 X" + (n % 2 ? "0.001" : "-0.002") + " Y0.001 F60000.000\n";
+  text += "M02\n%\n";
+  { std::ofstream(path("short.nc")) << text; }
+  const nlohmann::json p = play(path("short.nc"));
+  ASSERT_EQ(send_to_board(path("short.nc"), "--board icestick", ""), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  EXPECT_EQ(board_["blocks"], 300);
+  EXPECT_EQ(board_["frames_read"], p["frames"]);
+  EXPECT_GT(board_["gap_cycles"].get<uint64_t>(), 0u);  // the line could not keep ahead
+  EXPECT_EQ(board_["board"]["board_error"], 0);
+}
+
+TEST_F(BoardCli, FlippedParityFailsNamingTheBlockWithNoPulseFromIt) {
+  std::vector<uint8_t> frames = ncinterp::tape::load_frames(kExamples + "/gear.nc");
+  // A digit of block N5's X word with its parity bit flipped.
+  std::string plain;
+  for (const uint8_t f : frames) plain += static_cast<char>(f & 0x7f);
+  const size_t word = plain.find("N5 G01 X");
+  ASSERT_NE(word, std::string::npos);
+  const size_t at = word + 9;
+  frames[at] ^= 0x80;
+  {
+    std::ofstream out(path("bad.tape"), std::ios::binary);
+    out.write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+  }
+  EXPECT_EQ(run("play " + path("bad.tape") + " --clock-hz " + kClock + " --report " + path("play.json")), 1);
+  const nlohmann::json p = nlohmann::json::parse(slurp(path("play.json")));
+  EXPECT_EQ(send_to_board(path("bad.tape"), "--board icestick", ""), 1);
+  EXPECT_NE(send_err_.find("block N5, offset " + std::to_string(at)), std::string::npos) << send_err_;
+  EXPECT_EQ(board_code_, 1);
+  EXPECT_EQ(board_["status"], "error");
+  EXPECT_EQ(board_["error"]["block"], 5);
+  // Blocks N1..N4 played, nothing of N5: the board stopped where the programmed N1..N4 end.
+  EXPECT_EQ(board_["blocks"], 4);
+  EXPECT_EQ(board_["final_position_blu"], board_["expected_position_blu"]);
+  EXPECT_EQ(board_["pulses_beyond_program"], 0);
+  expect_same_motion(p);
+}
+
+TEST_F(BoardCli, SendAndBoardSimRefuseUnusableOptionsClearly) {
+  { std::ofstream(path("plain.txt")) << "not a port"; }
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + path("plain.txt")), 1);
+  EXPECT_NE(stderr_.find("not a serial port"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + path("tty") + " --baud 12345"), 1);
+  EXPECT_NE(stderr_.find("not a standard termios rate"), std::string::npos) << stderr_;
+  // 1 MHz / 921600 baud is about one clock per bit: the board's receiver needs 4.
+  EXPECT_EQ(run("board-sim --pty " + path("tty") + " --clock-hz 1e6 --baud 921600"), 1);
+  EXPECT_NE(stderr_.find("the board needs 4 to 4095"), std::string::npos) << stderr_;
+  EXPECT_FALSE(fs::exists(path("tty")));
+}
+
+}  // namespace

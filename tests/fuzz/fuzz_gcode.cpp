@@ -1,0 +1,10 @@
+// G-code reader fuzzer: any text goes to the G-code contour reader (sw/host/firststage/
+// inputs/gcode.cpp); a refusal must be a one-line InputError "FILE:LINE: what", an accepted
+// contour must go through the whole first stage (contour_pipeline.h).
+#include "contour_pipeline.h"
+#include "fuzz_check.h"
+#include "inputs/contour_inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.nc", ncinterp::firststage::parse_gcode);
+}

@@ -1,0 +1,189 @@
+// Lock step of the board RTL's modules against their golden twins, every clock:
+// uart_rx (rtl/board/uart_rx.sv) vs UartRxModel, uart_tx (rtl/board/uart_tx.sv) vs
+// UartTxModel, step_stretcher (rtl/board/step_stretcher.sv) vs StepStretcherModel, under
+// random stimulus (bytes, gaps, bit times, framing errors, glitches; step trains with
+// direction changes faster and slower than the driver timing). Besides agreeing, the
+// twins must do their job: bytes arrive as sent, pulses keep their width and set-up time.
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <random>
+
+#include "Vstep_stretcher.h"
+#include "Vuart_rx.h"
+#include "Vuart_tx.h"
+#include "step_stretcher_model.h"
+#include "uart_rx_model.h"
+#include "uart_tx_model.h"
+#include "verilated.h"
+
+namespace ncinterp::board {
+namespace {
+
+template <typename Model>
+void clock_edge(Model& m) {
+  m.clk_i = 1;
+  m.eval();
+  m.clk_i = 0;
+  m.eval();
+}
+
+// The first eval() only settles the model (Verilator sees no edge on it): clock low first.
+template <typename Model>
+void reset(Model& m) {
+  m.rst_ni = 0;
+  m.clk_i = 0;
+  m.eval();
+  clock_edge(m);
+  m.rst_ni = 1;
+  m.eval();
+}
+
+TEST(BoardLockstep, UartRxMatchesItsTwin) {
+  std::mt19937_64 rng(14);
+  for (int round = 0; round < 12; ++round) {
+    const uint16_t bit = static_cast<uint16_t>(4 + rng() % 40);
+    Vuart_rx rtl;
+    reset(rtl);
+    UartRxModel twin;
+    UartTxModel line;  // the sender
+    rtl.bit_cycles_i = bit;
+    std::deque<uint8_t> sent;
+    std::vector<uint8_t> got;
+    unsigned errors = 0, gap = 0;
+    for (uint64_t c = 0; c < 40000; ++c) {
+      // A byte now and then, sometimes back to back; a framing error (stop bit forced low)
+      // or a short glitch on the idle line now and then.
+      const bool offer = line.ready() && gap == 0;
+      const uint8_t byte = static_cast<uint8_t>(rng());
+      bool rx = line.tx();
+      const unsigned r = static_cast<unsigned>(rng() % 4000);
+      if (r == 0 && !line.ready()) rx = false;       // corrupts a bit (may break the frame)
+      if (r == 1 && line.ready()) rx = false;        // a one-clock glitch on the idle line
+      rtl.rx_i = rx;
+      clock_edge(rtl);
+      twin.tick(rx, bit);
+      line.tick(byte, offer, bit);
+      if (offer) {
+        sent.push_back(byte);
+        gap = rng() % 3 == 0 ? 0 : static_cast<unsigned>(rng() % (30 * bit));
+      } else if (gap) {
+        --gap;
+      }
+      ASSERT_EQ(rtl.valid_o, twin.valid()) << "clock " << c << " bit " << bit;
+      ASSERT_EQ(rtl.frame_error_o, twin.frame_error()) << "clock " << c;
+      ASSERT_EQ(rtl.data_o, twin.data()) << "clock " << c;
+      if (twin.valid()) got.push_back(twin.data());
+      errors += twin.frame_error();
+    }
+    // Without disturbances every byte arrives as sent; with them most still do.
+    EXPECT_GT(got.size() + errors, sent.size() / 2);
+    size_t match = 0;
+    for (size_t i = 0; i < std::min(got.size(), sent.size()); ++i) match += got[i] == sent[i];
+    EXPECT_GT(match, 0u);
+  }
+}
+
+TEST(BoardLockstep, UartRxReceivesEveryByteOfACleanLine) {
+  for (uint16_t bit : {4, 5, 9, 104}) {
+    Vuart_rx rtl;
+    reset(rtl);
+    rtl.bit_cycles_i = bit;
+    UartTxModel line;
+    std::vector<uint8_t> got;
+    unsigned next = 0;
+    for (uint64_t c = 0; c < 300ull * 10 * bit && got.size() < 256; ++c) {
+      const bool offer = line.ready() && next < 256;
+      rtl.rx_i = line.tx();
+      clock_edge(rtl);
+      line.tick(static_cast<uint8_t>(next), offer, bit);
+      next += offer;
+      if (rtl.valid_o) got.push_back(rtl.data_o);
+      ASSERT_FALSE(rtl.frame_error_o) << "bit " << bit << " clock " << c;
+    }
+    ASSERT_EQ(got.size(), 256u) << "bit " << bit;
+    for (unsigned i = 0; i < 256; ++i) ASSERT_EQ(got[i], i) << "bit " << bit;
+  }
+}
+
+TEST(BoardLockstep, UartTxMatchesItsTwin) {
+  std::mt19937_64 rng(15);
+  for (int round = 0; round < 8; ++round) {
+    const uint16_t bit = static_cast<uint16_t>(4 + rng() % 30);
+    Vuart_tx rtl;
+    reset(rtl);
+    rtl.bit_cycles_i = bit;
+    UartTxModel twin;
+    UartRxModel listener;
+    std::vector<uint8_t> sent, got;
+    for (uint64_t c = 0; c < 30000; ++c) {
+      ASSERT_EQ(rtl.ready_o, twin.ready()) << "clock " << c;
+      ASSERT_EQ(rtl.tx_o, twin.tx()) << "clock " << c;
+      const uint8_t byte = static_cast<uint8_t>(rng());
+      const bool valid = rng() % 3 != 0;
+      if (valid && twin.ready()) sent.push_back(byte);
+      rtl.data_i = byte;
+      rtl.valid_i = valid;
+      const bool line = twin.tx();
+      clock_edge(rtl);
+      twin.tick(byte, valid, bit);
+      listener.tick(line, bit);
+      if (listener.valid()) got.push_back(listener.data());
+      ASSERT_FALSE(listener.frame_error());
+    }
+    ASSERT_GE(sent.size(), got.size());
+    ASSERT_GE(got.size() + 1, sent.size());  // the last one may still be on the line
+    for (size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], sent[i]);
+  }
+}
+
+TEST(BoardLockstep, StepStretcherMatchesItsTwin) {
+  std::mt19937_64 rng(16);
+  for (int round = 0; round < 24; ++round) {
+    StretcherTiming t;
+    t.setup_cycles = static_cast<uint16_t>(1 + rng() % 12);
+    t.pulse_cycles = static_cast<uint16_t>(1 + rng() % 24);
+    t.low_cycles = static_cast<uint16_t>(1 + rng() % 24);
+    // Mean step spacing from much faster than the driver timing (overruns) to slower.
+    const unsigned spacing = 1 + static_cast<unsigned>(rng() % (4 * (t.setup_cycles + t.pulse_cycles + t.low_cycles)));
+    Vstep_stretcher rtl;
+    reset(rtl);
+    rtl.setup_cycles_i = t.setup_cycles;
+    rtl.pulse_cycles_i = t.pulse_cycles;
+    rtl.low_cycles_i = t.low_cycles;
+    StepStretcherModel twin;
+    bool dir = false, prev_step = false;
+    uint64_t in = 0, out = 0, overruns = 0, dir_change = 0, high_since = 0;
+    for (uint64_t c = 1; c < 20000; ++c) {
+      if (rng() % 16 == 0) dir = !dir;
+      const bool step = rng() % spacing == 0;
+      in += step;
+      rtl.step_i = step;
+      rtl.dir_i = dir;
+      const bool dir_before = twin.dir();
+      clock_edge(rtl);
+      twin.tick(step, dir, t);
+      ASSERT_EQ(rtl.step_o, twin.step()) << "clock " << c;
+      ASSERT_EQ(rtl.dir_o, twin.dir()) << "clock " << c;
+      ASSERT_EQ(rtl.overrun_o, twin.overrun()) << "clock " << c;
+      overruns += twin.overrun();
+      if (twin.dir() != dir_before) {
+        EXPECT_FALSE(twin.step()) << "dir changed during a pulse, clock " << c;
+        dir_change = c;
+      }
+      if (twin.step() && !prev_step) {
+        ++out;
+        high_since = c;
+        if (dir_change) EXPECT_GE(c - dir_change, t.setup_cycles) << "dir set-up, clock " << c;
+      }
+      if (!twin.step() && prev_step) EXPECT_EQ(c - high_since, t.pulse_cycles) << "pulse width, clock " << c;
+      prev_step = twin.step();
+    }
+    // Every pulse comes out unless it was reported lost (two may still be on their way).
+    EXPECT_LE(out + overruns, in);
+    EXPECT_GE(out + overruns + 2, in) << "round " << round;
+  }
+}
+
+}  // namespace
+}  // namespace ncinterp::board
