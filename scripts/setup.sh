@@ -13,6 +13,7 @@ packages=(
   z3 boolector                        # SMT solvers of the formal proofs (scripts/formal.sh)
   iverilog                            # reference simulator for the benchmark
   gtkwave xvfb x11-apps               # waves; the screenshot of waves/interp.gtkw (xwd)
+  parallel                            # ncinterp sweep's local runner (GNU parallel)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -79,7 +79,8 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   out.program = tape::parse_frames(frames, setup.format);
   std::vector<ProgrammedBlock> blocks = lay_out(out.program);
 
-  const InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
+  InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
+  cfg.pos_width = setup.pos_width;
   if (contour) {
     ReferenceOptions ro;
     ro.blu_mm = out.blu_mm;

@@ -1,5 +1,7 @@
 // `ncinterp sweep` from the command line: a small range end to end, bad options, a tool
-// missing from PATH stated in its columns.
+// missing from PATH stated in its columns; a grid planned, run one point at a time (by
+// hand in reverse order, by GNU parallel) and collected gives the in-process tables; a
+// rerun measures nothing.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,8 +59,8 @@ TEST_F(SweepCli, SmallRangeWritesOneRowPerWidthAndThePlot) {
   EXPECT_EQ(files(), (std::vector<std::string>{"s.csv", "s.md", "s.svg"}));
   const auto rows = csv_rows(slurp(path("s.csv")));
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(at(rows, 1, "width"), "10");
-  EXPECT_EQ(at(rows, 2, "width"), "11");
+  EXPECT_EQ(at(rows, 1, "IncWidth"), "10");
+  EXPECT_EQ(at(rows, 2, "IncWidth"), "11");
   EXPECT_GT(std::stoul(at(rows, 1, "blocks")), std::stoul(at(rows, 2, "blocks")));
   EXPECT_EQ(at(rows, 1, "blocks circle_r50.json"), at(rows, 1, "blocks"));
   for (size_t i : {1, 2}) {
@@ -72,7 +74,7 @@ TEST_F(SweepCli, SmallRangeWritesOneRowPerWidthAndThePlot) {
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   EXPECT_NE(slurp(path("s.md")).find("| 11 |"), std::string::npos);
-  EXPECT_NE(stdout_.find("| width | blocks |"), std::string::npos) << "the table on stdout";
+  EXPECT_NE(stdout_.find("| IncWidth | blocks |"), std::string::npos) << "the table on stdout";
 }
 
 TEST_F(SweepCli, BadOptionsAndInputsExitOneAndWriteNothing) {
@@ -99,7 +101,8 @@ TEST_F(SweepCli, AToolNotOnPathIsStatedInItsColumns) {
   ASSERT_EQ(code, 0) << stderr_;
   const auto rows = csv_rows(slurp(path("s.csv")));
   ASSERT_EQ(rows.size(), 2u);
-  for (const char* c : {"cells", "flip_flops", "ice40_luts", "ice40_logic_cells", "fmax_mhz"})
+  for (const char* c :
+       {"cells", "flip_flops", "ice40_luts", "ice40_logic_cells", "fmax_mhz", "hx1k_logic_cells", "hx1k_fmax_mhz"})
     EXPECT_EQ(at(rows, 1, c), "yosys not on PATH") << c;
   EXPECT_EQ(at(rows, 1, "check"), "pass");  // the rest of the row is measured
 }
@@ -108,21 +111,95 @@ TEST_F(SweepCli, RefusedPointsAreNamedOnceAndAllRefusedIsAFailedRun) {
   // A 2 um circle is refused at every width (it lies within the tolerance of its start).
   const std::string tiny = dir_.string() + ".tiny.nc";
   std::ofstream(tiny) << "G21 G90\nG0 X0.002 Y0\nG3 X0.002 Y0 I-0.002 J0 F100\nM2\n";
-  EXPECT_EQ(run("sweep " + tiny + " --widths 2:3 --no-synth --no-rtl --csv " + path("s.csv")), 1);
+  const std::string cache = dir_.string() + ".cache";
+  EXPECT_EQ(run("sweep " + tiny + " --widths 2:3 --no-synth --no-rtl --cache " + cache + " --csv " + path("s.csv")), 1);
   std::filesystem::remove(tiny);
-  EXPECT_NE(stderr_.find("sweep: W=2, " + tiny + ": refused: "), std::string::npos) << stderr_;
-  EXPECT_NE(stderr_.find("sweep: W=3, " + tiny + ": refused: "), std::string::npos) << stderr_;
-  EXPECT_NE(stderr_.find("no width of --widths 2:3 could tape any input"), std::string::npos) << stderr_;
+  std::filesystem::remove_all(cache);
+  for (const char* w : {"IncWidth=2 ", "IncWidth=3 "}) {
+    const size_t at = stderr_.find(std::string("sweep: ") + w);
+    ASSERT_NE(at, std::string::npos) << stderr_;
+    EXPECT_NE(stderr_.find(", " + tiny + ": refused: ", at), std::string::npos) << stderr_;
+  }
+  EXPECT_NE(stderr_.find("no point of the grid could tape any input"), std::string::npos) << stderr_;
   EXPECT_TRUE(files().empty());
 }
 
 TEST_F(SweepCli, UsageAndOutputErrorsExitOneAndWriteNothing) {
-  EXPECT_EQ(run("sweep " + circle_), 1);  // --widths is required
+  EXPECT_EQ(run("sweep " + circle_ + " --jobs 0"), 1);  // not a positive number
   EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
-  EXPECT_EQ(run("sweep " + circle_ + " --widths 10 --no-synth --no-rtl --csv " + path("s.csv") +
-                " --svg " + path("nodir/s.svg")), 1);
+  const std::string cache = dir_.string() + ".cache";
+  EXPECT_EQ(run("sweep " + circle_ + " --widths 10 --no-synth --no-rtl --cache " + cache + " --csv " +
+                path("s.csv") + " --svg " + path("nodir/s.svg")), 1);
+  std::filesystem::remove_all(cache);
   EXPECT_NE(stderr_.find("nodir/s.svg"), std::string::npos) << stderr_;
   EXPECT_TRUE(files().empty());
+}
+
+class SweepGrid : public SweepCli {
+ protected:
+  // 4 points: IncWidth 10, 11 x PosWidth 16, 32 (16 bits cannot hold the circle: FAIL).
+  std::string grid(const std::string& cache) const {
+    return "sweep " + circle_ + " --widths 10:11 --pos-widths 16,32 --no-synth --no-rtl" + fast_ + " --cache " + cache;
+  }
+  std::vector<std::string> jobs(const std::string& cache) const {
+    std::vector<std::string> lines;
+    std::istringstream in(slurp(cache + "/jobs.txt"));
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  }
+  void TearDown() override {
+    for (const char* c : {".local", ".planned", ".parallel"}) std::filesystem::remove_all(dir_.string() + c);
+    SweepCli::TearDown();
+  }
+};
+
+TEST_F(SweepGrid, PlannedPointsRunInAnyOrderCollectToTheInProcessTables) {
+  const std::string local = dir_.string() + ".local", planned = dir_.string() + ".planned";
+  ASSERT_EQ(run(grid(local) + " --jobs 2 --csv " + path("local.csv") + " --pareto-md " + path("front.md") +
+                " --pareto-svg " + path("front.svg") + " --times " + path("times.csv")),
+            0)
+      << stderr_;
+  EXPECT_NE(stderr_.find("4 of 4 points measured"), std::string::npos) << stderr_;
+  const auto rows = csv_rows(slurp(path("local.csv")));
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(at(rows, 1, "PosWidth"), "16");
+  EXPECT_EQ(at(rows, 1, "check").rfind("FAIL circle_r50.json", 0), 0u) << at(rows, 1, "check");
+  EXPECT_EQ(at(rows, 2, "check"), "pass");
+  EXPECT_NE(slurp(path("front.md")).find("no area measured"), std::string::npos);
+  EXPECT_NE(slurp(path("front.svg")).find("</svg>"), std::string::npos);
+  EXPECT_EQ(csv_rows(slurp(path("times.csv"))).size(), 5u);
+
+  ASSERT_EQ(run(grid(planned) + " --plan --slurm"), 0) << stderr_;
+  EXPECT_NE(slurp(planned + "/sweep.sbatch").find("#SBATCH --array=1-4\n"), std::string::npos);
+  std::vector<std::string> lines = jobs(planned);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_NE(lines[0].find(" sweep --run-one "), std::string::npos) << lines[0];
+  std::reverse(lines.begin(), lines.end());
+  for (const std::string& l : lines) ASSERT_EQ(std::system((l + " 2>/dev/null").c_str()), 0) << l;
+  ASSERT_EQ(run("sweep --collect " + planned + " --csv " + path("collected.csv")), 0) << stderr_;
+  EXPECT_EQ(slurp(path("collected.csv")), slurp(path("local.csv")));
+
+  // Everything measured: a rerun measures nothing and gives the same table.
+  ASSERT_EQ(run(grid(local) + " --csv " + path("again.csv")), 0) << stderr_;
+  EXPECT_NE(stderr_.find("0 of 4 points measured"), std::string::npos) << stderr_;
+  EXPECT_EQ(slurp(path("again.csv")), slurp(path("local.csv")));
+}
+
+TEST_F(SweepGrid, GnuParallelRunsThePlan) {
+  ASSERT_EQ(std::system("command -v parallel >/dev/null 2>&1"), 0) << "GNU parallel not installed (scripts/setup.sh installs it)";
+  const std::string local = dir_.string() + ".local", par = dir_.string() + ".parallel";
+  ASSERT_EQ(run(grid(local) + " --csv " + path("local.csv")), 0) << stderr_;
+  ASSERT_EQ(run(grid(par) + " --plan"), 0) << stderr_;
+  ASSERT_EQ(std::system(("parallel --will-cite -j 2 < " + par + "/jobs.txt 2>/dev/null").c_str()), 0);
+  ASSERT_EQ(run("sweep --collect " + par + " --csv " + path("par.csv")), 0) << stderr_;
+  EXPECT_EQ(slurp(path("par.csv")), slurp(path("local.csv")));
+}
+
+TEST_F(SweepGrid, RunOneAndCollectNeedAPlan) {
+  EXPECT_EQ(run("sweep --collect " + path("nothing")), 1);
+  EXPECT_NE(stderr_.find("nothing/plan.json: no plan"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("sweep " + circle_ + " --pos-widths 16 --slurm --no-synth --no-rtl --cache " + path("c")), 1);
+  EXPECT_NE(stderr_.find("--slurm writes a job array with --plan"), std::string::npos) << stderr_;
 }
 
 }  // namespace

@@ -112,6 +112,7 @@ tape::Format tape_format(const FirstStageOptions& options) {
   f.frac_digits = frac_digits_of(options.blu_mm);
   f.feed_frac_digits = 3;
   f.inc_width = options.width;
+  f.feed_width = options.feed_width;
   return f;
 }
 

@@ -21,6 +21,7 @@ struct FirstStageOptions {
   double tol_mm = 0.01;        // delta: how far the pulse path may be from the contour
   double blu_mm = 0.001;       // grid; must be 10^-k mm (k = tape fraction digits)
   unsigned width = 16;         // increment register W: |dx|,|dy|,|i|,|j| <= 2^W - 1
+  unsigned feed_width = 32;    // F register: F <= 2^feed_width - 1 (tape::Format::feed_width)
   bool arcs_circle = false;    // arcs as quadrant arc blocks instead of chords
   double cutter_radius_mm = 0.0;  // 0: no offset (tape = contour)
   bool side_left = true;       // cutter on the left of the direction of travel (G41)

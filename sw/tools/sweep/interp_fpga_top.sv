@@ -1,6 +1,7 @@
 // Place-and-route harness of interp_top for the bit-width sweep's Fmax (nextpnr-ice40).
 //
-// What: interp_top at IncWidth with its ports brought down to what a board has pins for.
+// What: interp_top with every parameter of the design point (passed through), its ports
+// brought down to what a board has pins for (40 pins: fits the HX1K's TQ144 as well).
 // interp_top has about 210 ports (48-bit feed modulus, two 32-bit positions, block and error
 // registers), more than the HX8K's CT256 package can bond, so it cannot be placed as it
 // is. Here the static feed modulus is shifted in serially (cfg_data_i / cfg_shift_i, as a
@@ -12,7 +13,15 @@
 // Cost: ModulusWidth + 8 flip-flops and a small multiplexer; the sweep's area columns come
 // from interp_top alone, this harness is used only for placement and Fmax.
 module interp_fpga_top #(
-  parameter int IncWidth = 16
+  // interp_top's parameters, passed through (the sweep sets any of them with chparam).
+  parameter int IncWidth       = 16,
+  parameter int FracDigits     = 3,
+  parameter int FeedWidth      = 32,
+  parameter int FeedFracDigits = 3,
+  parameter int PosWidth       = 32,
+  parameter int SeqWidth       = 20,
+  parameter int OffsetWidth    = 32,
+  parameter int ModulusWidth   = 48
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -35,10 +44,6 @@ module interp_fpga_top #(
   output logic [7:0] rd_data_o
 );
 
-  localparam int ModulusWidth = 48;
-  localparam int PosWidth     = 32;
-  localparam int SeqWidth     = 20;
-  localparam int OffsetWidth  = 32;
   localparam int StatusWidth  = 2 * PosWidth + 2 * SeqWidth + OffsetWidth;
   localparam int StatusBytes  = (StatusWidth + 7) / 8;
 
@@ -53,7 +58,8 @@ module interp_fpga_top #(
   logic [8*StatusBytes-1:0] status;
 
   interp_top #(
-    .IncWidth(IncWidth), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
+    .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
+    .FeedFracDigits(FeedFracDigits), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
     .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth)
   ) u_interp (
     .clk_i, .rst_ni,

@@ -45,6 +45,8 @@ struct SynthResult {
   Measured ice40_luts;        // yosys `synth_ice40`: SB_LUT4
   Measured ice40_logic_cells; // nextpnr-ice40, HX8K: logic cells of the placed harness
   Measured fmax_mhz;          // nextpnr-ice40, HX8K: after routing
+  Measured small_logic_cells; // nextpnr-ice40 on the small part (HX1K): logic cells
+  Measured small_fmax_mhz;    // and Fmax there
   bool from_cache = false;
 };
 

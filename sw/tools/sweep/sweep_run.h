@@ -1,44 +1,33 @@
-// The bit-width sweep: for every W of the range, the tapes, errors, feed and cycles of
-// every input (first stage + golden model + checker), the hardware cost (yosys, nextpnr)
-// and the RTL variant in lock step with the golden model.
-// Idea: widths are independent, so a pool of `jobs` threads takes them one at a time
-// (synthesis and the variant builds are child processes, the rest runs in the thread);
-// whatever fails at one width becomes that row's reason and the sweep goes on.
+// The in-process runner of a grid (`ncinterp sweep ... --jobs N`): every planned point that
+// has no result file yet is measured by run_point on a pool of threads and its result
+// stored; points with a result are never run again.
+// Idea: this is the same per-point code as `--run-one KEY` (which GNU parallel or a Slurm
+// job array call once per point), only the scheduling differs; whatever fails at one point
+// becomes that point's reason and the grid goes on.
 #pragma once
 #include <cstddef>
 #include <functional>
 #include <string>
-#include <vector>
 
-#include "rtl_variant.h"
-#include "sweep_row.h"
-#include "synthesis.h"
-#include "tape_measurement.h"
-#include "width_range.h"
+#include "point_run.h"
+#include "point_store.h"
 
 namespace ncinterp::sweep {
 
-struct SweepSetup {
-  WidthRange widths;
-  std::vector<SweepInput> inputs;
-  MeasureSetup measure;
-  unsigned jobs = 0;          // 0: one per core
-  bool synthesis = true;      // yosys + nextpnr columns
-  SynthesisSetup synth;
-  bool rtl = true;            // the verilated variant in lock step
-  RtlVariantSetup rtl_variant;
-  std::string tape_dir;       // tapes for the RTL variant: <tape_dir>/w<W>/
-};
-
 struct SweepProgress {
-  unsigned width = 0;
-  std::string stage;          // what that width is doing now ("done" when finished)
-  size_t widths_done = 0, widths_total = 0;
+  std::string point;          // the point's text
+  std::string stage;          // what it is doing now ("done" when finished)
+  size_t points_done = 0, points_total = 0;  // of the points that had to run
 };
 using ProgressCallback = std::function<void(const SweepProgress&)>;
 
-// One row per width, in width order. progress (optional) is called from the worker
-// threads, one call at a time.
-std::vector<SweepRow> run_sweep(const SweepSetup& setup, const ProgressCallback& progress = nullptr);
+// Runs the points of the plan without a result in dir; jobs 0: one per core. Returns the
+// number of points run. progress (optional) is called from the workers, one call at a time.
+size_t run_missing_points(const Plan& plan, const std::string& dir, const PointSetup& setup, unsigned jobs,
+                          const ProgressCallback& progress = nullptr);
+
+// Runs one planned point (by key) and stores its result, unless it has one already.
+// Returns false when it had one. Throws std::invalid_argument for a key not in the plan.
+bool run_one_point(const Plan& plan, const std::string& dir, const PointSetup& setup, const std::string& key);
 
 }  // namespace ncinterp::sweep

@@ -66,7 +66,7 @@ Table sweep_table(const std::vector<SweepRow>& rows) {
   Table t;
   t.header = {"width", "blocks", "tape_frames", "path_error_max_blu", "total_error_max_mm", "check",
               "feed_error_worst", "saturated_blocks", "cycles", "rtl_cosim", "cells", "flip_flops",
-              "ice40_luts", "ice40_logic_cells", "fmax_mhz"};
+              "ice40_luts", "ice40_logic_cells", "fmax_mhz", "hx1k_logic_cells", "hx1k_fmax_mhz"};
   if (!rows.empty())
     for (const InputResult& in : rows.front().inputs)
       t.header.push_back("blocks " + std::filesystem::path(in.input).filename().string());
@@ -86,7 +86,9 @@ Table sweep_table(const std::vector<SweepRow>& rows) {
         cell(r.synth.flip_flops, "%.0f"),
         cell(r.synth.ice40_luts, "%.0f"),
         cell(r.synth.ice40_logic_cells, "%.0f"),
-        cell(r.synth.fmax_mhz, "%.2f")};
+        cell(r.synth.fmax_mhz, "%.2f"),
+        cell(r.synth.small_logic_cells, "%.0f"),
+        cell(r.synth.small_fmax_mhz, "%.2f")};
     for (const InputResult& in : r.inputs) c.push_back(in.measured() ? std::to_string(in.blocks) : kRefused);
     t.rows.push_back(std::move(c));
   }

@@ -19,7 +19,7 @@ struct Table {
 
 // Columns: width, blocks, tape_frames, path_error_max_blu, total_error_max_mm, check,
 // feed_error_worst, saturated_blocks, cycles, rtl_cosim, cells, flip_flops, ice40_luts,
-// ice40_logic_cells, fmax_mhz, then "blocks <input>" for every input.
+// ice40_logic_cells, fmax_mhz (HX8K), hx1k_logic_cells, hx1k_fmax_mhz, then "blocks <input>" for every input.
 Table sweep_table(const std::vector<SweepRow>& rows);
 
 // RFC 4180 CSV: a cell with a comma, quote or line break is quoted.

@@ -49,22 +49,39 @@ std::string content_hash(const std::vector<std::string>& files, const std::vecto
   return hex;
 }
 
-std::string SynthCache::path(unsigned width) const {
-  return dir_ + "/" + key_ + "-w" + std::to_string(width) + ".json";
+std::string SynthCache::path(const std::string& tag) const { return dir_ + "/" + key_ + "-" + tag + ".json"; }
+
+nlohmann::json measured_json(const Measured& m) { return to_json(m); }
+Measured measured_from_json(const nlohmann::json& j) { return from_json(j); }
+
+nlohmann::json synth_result_json(const SynthResult& r) {
+  return {{"cells", to_json(r.cells)},
+          {"flip_flops", to_json(r.flip_flops)},
+          {"ice40_luts", to_json(r.ice40_luts)},
+          {"ice40_logic_cells", to_json(r.ice40_logic_cells)},
+          {"fmax_mhz", to_json(r.fmax_mhz)},
+          {"small_logic_cells", to_json(r.small_logic_cells)},
+          {"small_fmax_mhz", to_json(r.small_fmax_mhz)}};
 }
 
-std::optional<SynthResult> SynthCache::load(unsigned width) const {
+SynthResult synth_result_from_json(const nlohmann::json& j) {
+  SynthResult r;
+  r.cells = from_json(j.at("cells"));
+  r.flip_flops = from_json(j.at("flip_flops"));
+  r.ice40_luts = from_json(j.at("ice40_luts"));
+  r.ice40_logic_cells = from_json(j.at("ice40_logic_cells"));
+  r.fmax_mhz = from_json(j.at("fmax_mhz"));
+  r.small_logic_cells = from_json(j.at("small_logic_cells"));
+  r.small_fmax_mhz = from_json(j.at("small_fmax_mhz"));
+  return r;
+}
+
+std::optional<SynthResult> SynthCache::load(const std::string& tag) const {
   if (dir_.empty()) return std::nullopt;
-  std::ifstream in(path(width));
+  std::ifstream in(path(tag));
   if (!in) return std::nullopt;
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    SynthResult r;
-    r.cells = from_json(j.at("cells"));
-    r.flip_flops = from_json(j.at("flip_flops"));
-    r.ice40_luts = from_json(j.at("ice40_luts"));
-    r.ice40_logic_cells = from_json(j.at("ice40_logic_cells"));
-    r.fmax_mhz = from_json(j.at("fmax_mhz"));
+    SynthResult r = synth_result_from_json(nlohmann::json::parse(in));
     r.from_cache = true;
     return r;
   } catch (const std::exception&) {
@@ -72,17 +89,13 @@ std::optional<SynthResult> SynthCache::load(unsigned width) const {
   }
 }
 
-void SynthCache::store(unsigned width, const SynthResult& r) const {
+void SynthCache::store(const std::string& tag, const SynthResult& r) const {
   if (dir_.empty()) return;
-  const nlohmann::json j = {{"width", width},
-                            {"cells", to_json(r.cells)},
-                            {"flip_flops", to_json(r.flip_flops)},
-                            {"ice40_luts", to_json(r.ice40_luts)},
-                            {"ice40_logic_cells", to_json(r.ice40_logic_cells)},
-                            {"fmax_mhz", to_json(r.fmax_mhz)}};
+  nlohmann::json j = synth_result_json(r);
+  j["parameters"] = tag;
   try {
     std::filesystem::create_directories(dir_);
-    write_file_atomically(path(width), j.dump(2) + "\n");
+    write_file_atomically(path(tag), j.dump(2) + "\n");
   } catch (const std::exception&) {
     // A cache that cannot be written only costs time on the next run.
   }

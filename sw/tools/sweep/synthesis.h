@@ -8,6 +8,7 @@
 // only edge registers; the LUT count is interp_top's own.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sweep_row.h"
@@ -24,6 +25,10 @@ struct SynthesisSetup {
   // The part nextpnr-ice40 places on: the HX8K in its CT256 package, 7680 logic cells.
   std::string pnr_part_name = "HX8K";
   std::vector<std::string> pnr_part_args = {"--hx8k", "--package", "ct256"};
+  // A second, small part placed as well (the HX1K in its TQ144 package, 1280 logic
+  // cells); an empty name: not placed.
+  std::string small_part_name = "HX1K";
+  std::vector<std::string> small_part_args = {"--hx1k", "--package", "tq144"};
   double pnr_target_mhz = 50.0;          // nextpnr's timing target (--freq)
   unsigned pnr_seed = 1;                 // placement seed, fixed so reruns agree
 };
@@ -31,8 +36,16 @@ struct SynthesisSetup {
 // The cache key of this setup: RTL and harness contents, commands, tool versions.
 std::string synthesis_key(const SynthesisSetup& setup);
 
-// Synthesises (or takes from the cache under `key`) the RTL at width W. Never throws for a
-// tool failure: each value is measured or carries its reason.
+// RTL parameters of one hardware point, in a fixed order: name -> value, each set with
+// `chparam -set NAME VALUE` on interp_top and on the harness.
+using RtlParameters = std::vector<std::pair<std::string, long long>>;
+
+// Synthesises (or takes from the cache under `key`) the RTL with these parameters. Never
+// throws for a tool failure: each value is measured or carries its reason.
+SynthResult synthesize(const RtlParameters& params, const SynthesisSetup& setup, const std::string& key);
+// The same at IncWidth = W, every other parameter at its default.
 SynthResult synthesize(unsigned width, const SynthesisSetup& setup, const std::string& key);
+// The cache and work-directory tag of a parameter set: "w12", "w12-FeedWidth24".
+std::string parameter_tag(const RtlParameters& params);
 
 }  // namespace ncinterp::sweep

@@ -39,6 +39,7 @@ InputResult measure_input(const SweepInput& input, unsigned width, const Measure
   checker::match_first_stage(cs, o, tape.start);
   cs.clock_hz = setup.clock_hz;
   cs.reader_cps = setup.reader_cps;
+  cs.pos_width = setup.pos_width;
   cs.engine = EngineKind::kGolden;
   cs.keep_pulses = false;
   try {

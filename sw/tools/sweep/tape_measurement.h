@@ -23,9 +23,10 @@ struct SweepInput {
 };
 
 struct MeasureSetup {
-  firststage::FirstStageOptions first_stage;  // tol, method, BLU, feed; width set per W
+  firststage::FirstStageOptions first_stage;  // tol, method, BLU, feed, F width; W set per call
   double clock_hz = 1e6;
   double reader_cps = 1000.0;                 // tape reader, characters per second
+  unsigned pos_width = 32;                    // the golden model's position counters
 };
 
 // The tape the first stage makes for the input at width W, as `ncinterp tape` writes it.

@@ -42,6 +42,8 @@ TEST_F(Synthesis, MeasuresTheStandInDesignAndCachesTheResult) {
     ASSERT_TRUE(r->ice40_logic_cells.ok()) << r->ice40_logic_cells.reason;
     ASSERT_TRUE(r->fmax_mhz.ok()) << r->fmax_mhz.reason;
     EXPECT_GT(*r->fmax_mhz.value, 20.0);
+    ASSERT_TRUE(r->small_logic_cells.ok()) << r->small_logic_cells.reason;  // the HX1K placement
+    ASSERT_TRUE(r->small_fmax_mhz.ok()) << r->small_fmax_mhz.reason;
     EXPECT_FALSE(r->from_cache);
   }
   // The accumulator and its carry: W + 1 flip-flops, so chparam reached the design.
@@ -54,6 +56,7 @@ TEST_F(Synthesis, MeasuresTheStandInDesignAndCachesTheResult) {
   EXPECT_TRUE(again.from_cache);
   EXPECT_EQ(*again.cells.value, *wide.cells.value);
   EXPECT_EQ(*again.fmax_mhz.value, *wide.fmax_mhz.value);
+  EXPECT_EQ(*again.small_logic_cells.value, *wide.small_logic_cells.value);
 }
 
 TEST_F(Synthesis, AFailingSynthesisKeepsItsReasonInItsRow) {

@@ -1,0 +1,106 @@
+// Pareto front and board recommendations (see pareto.h).
+#include "pareto.h"
+
+#include <cstdio>
+
+namespace ncinterp::sweep {
+namespace {
+
+bool passed(const PointResult& r) {
+  if (!r.row.missing_input().empty()) return false;
+  for (const InputResult& in : r.row.inputs)
+    if (in.violations) return false;
+  return true;
+}
+
+std::optional<double> objective(const PointResult& r, const std::string& name) {
+  if (name == "ice40_logic_cells") return r.row.synth.ice40_logic_cells.value;
+  if (name == "total_error_max_mm") return r.row.worst(&InputResult::total_error_max_mm);
+  const std::optional<uint64_t> frames = r.row.total(&InputResult::frames);
+  return frames ? std::optional<double>(static_cast<double>(*frames)) : std::nullopt;
+}
+
+// a dominates b: no worse on every objective, better on one.
+bool dominates(const std::vector<double>& a, const std::vector<double>& b) {
+  bool better = false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i] > b[i]) return false;
+    if (a[i] < b[i]) better = true;
+  }
+  return better;
+}
+
+bool fits(const PointResult& r, const Board& b) {
+  const SynthResult& s = r.row.synth;
+  if (b.small_part) return s.small_logic_cells.ok() && s.small_fmax_mhz.ok() && *s.small_logic_cells.value <= b.logic_cells;
+  return s.ice40_logic_cells.ok() && s.fmax_mhz.ok() && *s.ice40_logic_cells.value <= b.logic_cells;
+}
+
+}  // namespace
+
+ParetoFront pareto_front(const std::vector<PointResult>& results) {
+  ParetoFront f;
+  bool any_area = false;
+  for (const PointResult& r : results) any_area |= passed(r) && r.row.synth.ice40_logic_cells.ok();
+  if (any_area) f.objectives.push_back("ice40_logic_cells");
+  f.objectives.push_back("total_error_max_mm");
+  f.objectives.push_back("tape_frames");
+
+  std::vector<size_t> eligible;
+  std::vector<std::vector<double>> values(results.size());
+  for (size_t i = 0; i < results.size(); ++i) {
+    if (!passed(results[i])) continue;
+    bool all = true;
+    for (const std::string& o : f.objectives) {
+      const std::optional<double> v = objective(results[i], o);
+      if (!v) all = false;
+      else values[i].push_back(*v);
+    }
+    if (all) eligible.push_back(i);
+  }
+  f.eligible = eligible.size();
+  for (size_t i : eligible) {
+    bool beaten = false;
+    for (size_t j : eligible) beaten |= j != i && dominates(values[j], values[i]);
+    if (!beaten) f.members.push_back(i);
+  }
+  return f;
+}
+
+const std::vector<Board>& target_boards() {
+  static const std::vector<Board> boards = {{"HX1K", 1280, true}, {"UP5K", 5280, false}, {"HX8K", 7680, false}};
+  return boards;
+}
+
+std::vector<Recommendation> recommend(const std::vector<PointResult>& results, const ParetoFront& front) {
+  std::vector<Recommendation> out;
+  const bool has_area = !front.objectives.empty() && front.objectives.front() == "ice40_logic_cells";
+  for (const Board& b : target_boards()) {
+    Recommendation rec{b, std::nullopt, ""};
+    if (!has_area) {
+      rec.why = "no area measured (synthesis not run)";
+      out.push_back(rec);
+      continue;
+    }
+    auto better = [&](size_t i, size_t j) {  // i before j by the rule
+      for (const char* o : {"total_error_max_mm", "tape_frames", "ice40_logic_cells"}) {
+        const double a = *objective(results[i], o), c = *objective(results[j], o);
+        if (a != c) return a < c;
+      }
+      return i < j;
+    };
+    for (size_t i : front.members)
+      if (fits(results[i], b) && (!rec.point || better(i, *rec.point))) rec.point = i;
+    if (rec.point) {
+      rec.why = "smallest total error of the front's points that fit";
+    } else {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "no point of the front fits (%.0f logic cells)", b.logic_cells);
+      rec.why = buf;
+    }
+    out.push_back(rec);
+  }
+  return out;
+}
+
+}  // namespace ncinterp::sweep
