@@ -5,6 +5,13 @@
 #include "fuzz_check.h"
 #include "inputs/contour_inputs.h"
 
+namespace {
+// The reader with its default cut depth (the lowest Z of the file is the cut).
+ncinterp::firststage::Contour parse(const std::string& text, const std::string& file) {
+  return ncinterp::firststage::parse_gcode(text, file);
+}
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.nc", ncinterp::firststage::parse_gcode);
+  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.nc", parse);
 }
