@@ -115,7 +115,7 @@ TEST_F(SweepCli, RefusedPointsAreNamedOnceAndAllRefusedIsAFailedRun) {
   EXPECT_EQ(run("sweep " + tiny + " --widths 2:3 --no-synth --no-rtl --cache " + cache + " --csv " + path("s.csv")), 1);
   std::filesystem::remove(tiny);
   std::filesystem::remove_all(cache);
-  for (const char* w : {"IncWidth=2 ", "IncWidth=3 "}) {
+  for (const char* w : {"IncWidth=2", "IncWidth=3"}) {
     const size_t at = stderr_.find(std::string("sweep: ") + w);
     ASSERT_NE(at, std::string::npos) << stderr_;
     EXPECT_NE(stderr_.find(", " + tiny + ": refused: ", at), std::string::npos) << stderr_;

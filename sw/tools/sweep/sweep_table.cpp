@@ -33,7 +33,7 @@ std::string worst(const SweepRow& row, double InputResult::*field, const char* f
 
 std::string check_cell(const SweepRow& row) {
   const std::string missing = row.missing_input();
-  if (!missing.empty()) return "refused: " + missing;
+  if (!missing.empty()) return missing;  // "input: reason"
   for (const InputResult& in : row.inputs)
     if (in.violations)
       return "FAIL " + std::filesystem::path(in.input).filename().string() + ": " + std::to_string(in.violations) +
