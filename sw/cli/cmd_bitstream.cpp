@@ -42,16 +42,7 @@ void setup(CLI::App& app) {
       ->check(CLI::Range(1u, 100u))
       ->capture_default_str();
   cmd->add_option("--work-dir", args->work_dir, "Netlists and tool logs (default: OUTPUT.build)");
-  cmd->callback([args] {
-    int code;
-    try {
-      code = run(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "ncinterp bitstream: " << e.what() << "\n";
-      code = 1;
-    }
-    if (code != 0) throw CommandExit{code};
-  });
+  cmd->callback([args] { run_command("bitstream", [&] { return run(*args); }); });
 }
 
 const CommandRegistration registration("bitstream", setup);

@@ -67,16 +67,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--max-cycles", o.max_cycles, "Stop after this many clocks (0: no limit)")->capture_default_str();
   cmd->add_option("--idle-timeout", o.idle_timeout_s, "Give up after this long without a byte, wall s")
       ->capture_default_str();
-  cmd->callback([args] {
-    int code;
-    try {
-      code = run(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "ncinterp board-sim: " << e.what() << "\n";
-      code = 1;
-    }
-    if (code != 0) throw CommandExit{code};
-  });
+  cmd->callback([args] { run_command("board-sim", [&] { return run(*args); }); });
 }
 
 const CommandRegistration registration("board-sim", setup);

@@ -200,16 +200,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--inject-fault", args->fault,
                   "Test hook: a fault in the golden model, KIND:CYCLE:AXIS with KIND one of "
                   "lost-pulse, stuck-step, accumulator, wrong-direction and AXIS x or y");
-  cmd->callback([args] {
-    int code;
-    try {
-      code = run(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "ncinterp cosim: " << e.what() << "\n";
-      code = 1;
-    }
-    if (code != 0) throw CommandExit{code};
-  });
+  cmd->callback([args] { run_command("cosim", [&] { return run(*args); }); });
 }
 
 const CommandRegistration registration("cosim", setup);

@@ -134,16 +134,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--max-cycles", args->max_cycles,
                   "Stop (as an error) after this many cycles; 0 = a bound from the tape")
       ->capture_default_str();
-  cmd->callback([args] {
-    int code;
-    try {
-      code = run(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "ncinterp play: " << e.what() << "\n";
-      code = 1;
-    }
-    if (code != 0) throw CommandExit{code};
-  });
+  cmd->callback([args] { run_command("play", [&] { return run(*args); }); });
 }
 
 const CommandRegistration registration("play", setup);

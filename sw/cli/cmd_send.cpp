@@ -179,16 +179,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--timeout", args->timeout_s, "Give up when the board is silent this long after the tape, s")
       ->capture_default_str();
-  cmd->callback([args] {
-    int code;
-    try {
-      code = run(*args);
-    } catch (const std::exception& e) {
-      std::cerr << "ncinterp send: " << e.what() << "\n";
-      code = 1;
-    }
-    if (code != 0) throw CommandExit{code};
-  });
+  cmd->callback([args] { run_command("send", [&] { return run(*args); }); });
 }
 
 const CommandRegistration registration("send", setup);

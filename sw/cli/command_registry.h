@@ -6,6 +6,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,20 @@ namespace ncinterp::cli {
 struct CommandExit {
   int code;
 };
+
+// The body of a command callback: runs `body` (which returns the exit code); an exception
+// is one line "ncinterp NAME: what" on stderr and exit 1. A non-zero code ends the program.
+template <class Body>
+void run_command(const char* name, Body body) {
+  int code;
+  try {
+    code = body();
+  } catch (const std::exception& e) {
+    std::cerr << "ncinterp " << name << ": " << e.what() << "\n";
+    code = 1;
+  }
+  if (code != 0) throw CommandExit{code};
+}
 
 using CommandSetup = std::function<void(CLI::App& app)>;
 
