@@ -64,9 +64,11 @@ log=$build/fuzz-$target.log
 before=$(find "$findings" -type f | wc -l)
 echo "fuzzing $target for $seconds s (log: $log)"
 set +e
-ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1} \
-  nice "$build/tests/fuzz/fuzz_$target" "${options[@]}" "$@" "$corpus" "$root/tests/fuzz/corpus/$target" \
-  >"$log" 2>&1
+# The CPU time next to the wall time: on a shared machine the fuzzer gets less than its hour.
+TIMEFORMAT='%U %S'
+{ time ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1} \
+    nice "$build/tests/fuzz/fuzz_$target" "${options[@]}" "$@" "$corpus" "$root/tests/fuzz/corpus/$target" \
+    >"$log" 2>&1; } 2>"$build/fuzz-$target.cpu"
 status=$?
 set -e
 after=$(find "$findings" -type f | wc -l)
@@ -74,6 +76,7 @@ last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
 execs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo "?")
 echo "target:     $target"
 echo "time:       $(grep -oE 'Done [0-9]+ runs in [0-9]+ second' "$log" || echo "stopped (see log)")"
+echo "cpu:        $(awk '{printf "%.0f s (user + system)", $1 + $2}' "$build/fuzz-$target.cpu")"
 echo "executions: $execs"
 echo "coverage:   $(echo "$last" | grep -oE 'cov: [0-9]+ ft: [0-9]+' || echo '?')"
 echo "corpus:     $(echo "$last" | grep -oE 'corp: [0-9]+/[0-9]+[a-zA-Z]*' || echo '?')"
