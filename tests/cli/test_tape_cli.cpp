@@ -178,6 +178,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadCase{"syntax.json", "{\n  \"start\": [0, 0],\n  \"segments\": [ {\"type\": \"line\" \"to\": [1, 0]} ]\n}\n",
                 "3: invalid JSON"},
+        // nlohmann throws out_of_range, not parse_error, for a number beyond a double.
+        BadCase{"overflow.json", "{\n  \"start\": [0, 0],\n  \"segments\": [1E999]\n}\n",
+                "3: invalid JSON: number out of range '1E999'"},
         BadCase{"type.json",
                 "{\n  \"start\": [0, 0],\n  \"segments\": [\n    {\"type\": \"line\", \"to\": [1, 0]},\n"
                 "    {\"type\": \"spiral\"}\n  ]\n}\n",

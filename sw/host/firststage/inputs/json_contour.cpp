@@ -110,6 +110,17 @@ Contour parse_json_contour(const std::string& text, const std::string& file) {
     const auto colon = msg.find(": ", msg.find("parse error"));
     throw InputError(file, line_of_offset(text, e.byte > 0 ? e.byte - 1 : 0),
                      "invalid JSON: " + (colon == std::string::npos ? msg : msg.substr(colon + 2)));
+  } catch (const json::out_of_range& e) {
+    // A number beyond a double (out_of_range.406, "number overflow parsing '1E999'") carries
+    // no position: the line is the first one holding the quoted literal.
+    const std::string msg = e.what();
+    const size_t open = msg.find('\''), close = msg.rfind('\'');
+    const std::string literal =
+        open != std::string::npos && close > open ? msg.substr(open + 1, close - open - 1) : "";
+    const size_t at = literal.empty() ? std::string::npos : text.find(literal);
+    throw InputError(file, at == std::string::npos ? 1 : line_of_offset(text, at),
+                     "invalid JSON: number out of range" +
+                         (literal.empty() ? std::string() : " '" + literal + "'"));
   }
   int key_line = 1;
   const std::vector<int> lines = segment_lines(text, &key_line);
