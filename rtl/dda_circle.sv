@@ -8,7 +8,7 @@
 // like forward Euler), and the order alternates every iteration, X first on the first one,
 // which cancels the first-order tilt of the closed curve. Per-axis pulse counters (|dx|,
 // |dy|) stop each axis exactly at the programmed end; the block's iterations are over
-// when both are 0 (done_o). The golden twin is sc_model/golden/circle_dda.h (which keeps
+// when both are 0 (done_o). The golden twin is sc_model/golden/dda_circle.h (which keeps
 // the axes by name and a y_first flag; here they are kept by role, see below: the same
 // values, one multiplexer layer less).
 // Timing: load_i loads the block at an edge where no iteration happens; an iteration

@@ -1,26 +1,25 @@
 // Tape decoder: 8-bit frames (ISO 840 even parity) -> word-address blocks (ISO 6983).
 //
-// What: takes one frame per clock over valid/ready, checks its parity, parses the words
-// N G M X Y I J F (strict number syntax, docs/interpolator.md section 3), assembles one
-// motion block and holds it (frame_ready_o low) until the block buffer takes it. G and F
-// are modal. An arc block (G02/G03) is first checked and dry-run by arc_prepare.sv, which
-// gives its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k.
-// The first bad frame stops the decoder with an error code, the bad block's N (or the
-// previous one) and the frame's offset; the error is only reported by interp_top once every
-// good block has played. The golden twin is GoldenTapeDecoder
-// (sc_model/golden/golden_decoder.h), whose named steps (process_frame, body_character,
-// digit, sign, dot, start_word, finish_word, end_of_block, handoff, fail) follow this
-// module decision by decision.
+// What: takes one frame per clock over valid/ready and assembles one motion block, which it
+// holds (frame_ready_o low) until the block buffer takes it. Three parts, in the order of
+// docs/interpolator.md section 3:
+//   - frame input (tape_frame_input.sv, 3.1): handshake, input register, parity, offset;
+//   - word parser (tape_word_parser.sv, 3.2): the words N G M X Y I J F, strict syntax;
+//   - block assembly with error capture (this module, 3.3 and 3.4): the decoder's state,
+//     the words' meaning (G and F are modal), the block's end, the handoff, and the first
+//     error, with its code, the bad block's N (or the previous one) and the frame's offset.
+// An arc block (G02/G03) is first checked and dry-run by arc_prepare.sv (3.5), which gives
+// its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k. The error
+// is only reported by interp_top once every good block has played.
+// Golden twin: GoldenTapeDecoder (sc_model/golden/tape_decoder.h), whose sections "Frame
+// input", "Word parser" and "Block assembly and error capture" follow these three parts
+// decision by decision.
 //
-// Timing: the reader's signals are registered first (so no logic depends on an input
-// combinationally): a frame taken at edge e (frame_valid_i & frame_ready_o) lands in the
-// input register and is processed at edge e+1, while the next frame may be taken. The LF
-// of a line block puts the decoder in HOLD, the LF of an arc block in ARC until arc_prepare
-// is done (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block
-// at the first edge where it is empty (blk_ready_i). frame_ready_o is low while the input
-// register is full and cannot be processed at the next edge (ARC, HOLD), and after an
-// error. tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a
-// truncated tape.
+// Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
+// a line block puts the decoder in HOLD, the LF of an arc block in ARC until arc_prepare is
+// done (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block at
+// the first edge where it is empty (blk_ready_i). tape_end_i (registered) with no frame
+// waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
   // Increment register width W: |X|, |Y|, |I|, |J| <= 2^IncWidth - 1 BLU.
@@ -71,24 +70,12 @@ module tape_decoder #(
   output logic [OffsetWidth-1:0] err_offset_o
 );
 
-  // The number accumulator holds any word's value; a digit is checked against the word's
-  // limit in NumWidth + 4 bits (num * 10 + 9 cannot overflow that).
+  localparam int KWidth = $clog2(IncWidth + 1);
+  localparam int StepWidth = FeedWidth + IncWidth + 1;
+  // The word parser's value width: the widest register a word fills.
   localparam int NumWidth0 = IncWidth > FeedWidth ? IncWidth : FeedWidth;
   localparam int NumWidth1 = NumWidth0 > SeqWidth ? NumWidth0 : SeqWidth;
   localparam int NumWidth  = NumWidth1 > 7 ? NumWidth1 : 7;
-  localparam int WideWidth = NumWidth + 4;
-
-  localparam logic [WideWidth-1:0] IncLimit  = {{(WideWidth - IncWidth){1'b0}}, {IncWidth{1'b1}}};
-  localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
-  localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
-  localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
-  localparam logic [WideWidth-1:0] CodeMask  = WideWidth'(127);
-  localparam int KWidth = $clog2(IncWidth + 1);
-  localparam int StepWidth = FeedWidth + IncWidth + 1;
-  localparam logic [3:0] FracCount     = 4'(FracDigits);
-  localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
-
-
 
   typedef enum logic [2:0] {
     StLeader  = 3'd0,  // before '%': frames skipped
@@ -100,38 +87,24 @@ module tape_decoder #(
     StArc     = 3'd6   // an arc block is checked and its iterations counted (arc_prepare)
   } state_e;
 
-  typedef enum logic [3:0] {
-    WordNone = 4'd0, WordN = 4'd1, WordG = 4'd2, WordM = 4'd3, WordX = 4'd4,
-    WordY = 4'd5, WordI = 4'd6, WordJ = 4'd7, WordF = 4'd8
-  } word_e;
-
-  typedef enum logic [1:0] {
-    NumStart  = 2'd0,  // right after the letter: a sign or a digit may come
-    NumSigned = 2'd1,  // after the sign: a digit must come
-    NumInt    = 2'd2,  // integer digits
-    NumFrac   = 2'd3   // after '.': fraction digits
-  } num_e;
-
   state_e state_q, state_d;
-  // Input register: in_frame_q is a frame taken from the reader and not processed yet
-  // (in_valid_q); tape_end_q is tape_end_i one clock late; ready_q is frame_ready_o.
-  logic [7:0] in_frame_q, in_frame_d;
-  logic       in_valid_q, in_valid_d, tape_end_q, ready_q, ready_d;
-  // Offset of the next frame: the offset reported for an error in the frame being taken.
-  logic [OffsetWidth-1:0] frame_count_q, frame_count_d;
 
-  // The word being read: its letter, number syntax state, magnitude, sign, the count of
-  // fraction digits read and the offset of its letter (for errors found at the word's end).
-  word_e                  word_q, word_d;
-  num_e                   num_state_q, num_state_d;
-  logic [NumWidth-1:0]    num_q, num_d;
-  logic                   neg_q, neg_d;
-  logic [3:0]             frac_count_q, frac_count_d;
-  logic [OffsetWidth-1:0] word_offset_q, word_offset_d;
+  // Frame input: the frame processed at this edge (take), its character, parity and offset.
+  logic                   take, parity_err, waiting, tape_end_q;
+  logic [6:0]             ch;
+  logic [OffsetWidth-1:0] offset;
+
+  // Word parser: its error, and the word a delimiter ends or starts.
+  logic                   body_char;  // a body character reaches the parser at this edge
+  logic                   word_err, delimiter, word_end, word_neg, word_start;
+  logic [3:0]             word_err_code;
+  logic [OffsetWidth-1:0] word_err_offset, word_offset;
+  logic [6:0]             word_letter;
+  logic [NumWidth-1:0]    word_value;
 
   // Block assembly. n_q is the last N read (never cleared: a block without N carries the
-  // previous one); motion_q (1 = G01, 2 = G02, 3 = G03) and feed_q are modal (G01 and
-  // "no feed" after reset).
+  // previous one); motion_q (interp_pkg::motion_e) and feed_q are modal (G01 and "no feed"
+  // after reset).
   logic [SeqWidth-1:0]  n_q, n_d;
   logic [1:0]           motion_q, motion_d;
   logic [FeedWidth-1:0] feed_q, feed_d;
@@ -149,24 +122,19 @@ module tape_decoder #(
   logic n_seen_q, n_seen_d, any_word_q, any_word_d;
   logic motion_blk_q, motion_blk_d, end_blk_q, end_blk_d;
 
-  // The error found (valid in StError).
+  // Error capture: the first error found (valid in StError).
   logic [3:0]             err_code_q, err_code_d;
   logic [SeqWidth-1:0]    err_block_q, err_block_d;
   logic [OffsetWidth-1:0] err_offset_q, err_offset_d;
 
   // Combinational helpers.
-  logic                   take;         // the frame in the input register is processed
-  logic                   update;       // the parser's registers change at this edge
+  logic                   update;       // the block assembly's registers change at this edge
   state_e                 state_next;   // the state after this edge
   logic                   tape_cut;     // truncated tape found at this edge
-  logic [6:0]             ch;           // its character
   logic                   fail;         // an error is found at this edge
   logic [3:0]             fail_code;
   logic [OffsetWidth-1:0] fail_offset;
   logic                   word_ok;      // the word ended by this frame was committed
-  logic                   signed_word, fractional_word, word_complete;
-  logic [3:0]             frac_limit;
-  logic [WideWidth-1:0]   limit, num_next;  // limit: the word's 2^w - 1 (127 for G and M)
   // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
   // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
   logic                   in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
@@ -182,34 +150,45 @@ module tape_decoder #(
     end
   endfunction
 
+  tape_frame_input #(.OffsetWidth(OffsetWidth)) u_frame (
+    .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
+    .accept_i(state_q != StHold && !in_arc && state_q != StError),
+    .error_next_i(state_next == StError),
+    .busy_next_i(state_next == StHold || state_next == StArc),
+    .take_o(take), .char_o(ch), .parity_err_o(parity_err), .offset_o(offset),
+    .waiting_o(waiting), .tape_ended_o(tape_end_q)
+  );
+
+  assign body_char = take && !parity_err && state_q == StBody;
+
+  tape_word_parser #(
+    .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
+    .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth), .NumWidth(NumWidth)
+  ) u_word (
+    .clk_i, .rst_ni, .char_valid_i(body_char), .char_i(ch), .offset_i(offset),
+    .err_o(word_err), .err_code_o(word_err_code), .err_offset_o(word_err_offset),
+    .delimiter_o(delimiter), .word_end_o(word_end), .word_letter_o(word_letter),
+    .word_value_o(word_value), .word_neg_o(word_neg), .word_offset_o(word_offset),
+    .word_start_o(word_start)
+  );
+
   assign in_arc = state_q == StArc;
-  assign take = in_valid_q && state_q != StHold && !in_arc && state_q != StError;
   // The reader has delivered every frame, none waits, and the program has not ended.
-  assign tape_cut = tape_end_q && !in_valid_q &&
+  assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
-  assign ch   = in_frame_q[6:0];
   assign update = take || in_arc || state_q == StHold || tape_cut;
   assign state_next = update ? state_d : state_q;
 
   always_comb begin
     // Clocks without an update (most clocks: the reader is slow) evaluate nothing here:
-    // the parser's registers keep their values (the always_ff's enable), so the next-state
-    // values are don't-care ('x): the verilated model skips them (fast) and synthesis folds
-    // the 'x away (no gate per next-state bit).
-    {state_d, frame_count_d, word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d,
-     n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
+    // the registers keep their values (the always_ff's enable), so the next-state values
+    // are don't-care ('x): the verilated model skips them (fast) and synthesis folds the 'x
+    // away (no gate per next-state bit).
+    {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
-     grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, signed_word, fractional_word,
-     frac_limit, limit, word_complete, num_next} = 'x;
+     grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok} = 'x;
     if (update) begin
       state_d       = state_q;
-      frame_count_d = frame_count_q;
-      word_d        = word_q;
-      num_state_d   = num_state_q;
-      num_d         = num_q;
-      neg_d         = neg_q;
-      frac_count_d  = frac_count_q;
-      word_offset_d = word_offset_q;
       n_d           = n_q;
       motion_d      = motion_q;
       feed_d        = feed_q;
@@ -229,32 +208,12 @@ module tape_decoder #(
       grow_y_d      = grow_y_q;
       fail          = 1'b0;
       fail_code     = interp_pkg::ErrParity;
-      fail_offset   = frame_count_q;
+      fail_offset   = offset;
       word_ok       = 1'b1;
-      signed_word     = 1'b0;
-      fractional_word = 1'b0;
-      frac_limit      = FracCount;
-      limit           = IncLimit;
-      word_complete   = 1'b0;
-      num_next        = '0;
 
       if (take) begin
-        frame_count_d = frame_count_q + 1'b1;
-        // Properties of the word being read (computed only when a frame is processed).
-        signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
-        fractional_word = signed_word || word_q == WordF;
-        frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
-        unique case (word_q)
-          WordN:        limit = SeqLimit;
-          WordG, WordM: limit = CodeMask;
-          WordF:        limit = FeedLimit;
-          default:      limit = IncLimit;
-        endcase
-        word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
-                                        : (num_state_q == NumInt);
-        num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(ch[3:0]);  // *10 + d
-        if (^in_frame_q) begin
-          fail = 1'b1;  // odd parity
+        if (parity_err) begin
+          fail = 1'b1;
         end else begin
           unique case (state_q)
             StLeader:  if (ch == interp_pkg::ChPercent) state_d = StBody;
@@ -268,124 +227,66 @@ module tape_decoder #(
               end
             end
             StBody: begin
-              if (ch == interp_pkg::ChSpace || ch == interp_pkg::ChCr) begin
-                // ignored everywhere, even inside a number
-              end else if (ch >= interp_pkg::ChZero && ch <= interp_pkg::ChNine) begin
-                if (word_q == WordNone) begin
-                  fail = 1'b1;
-                  fail_code = interp_pkg::ErrMalformedNumber;
-                end else if (num_state_q == NumFrac && frac_count_q == frac_limit) begin
-                  fail = 1'b1;
-                  fail_code = interp_pkg::ErrMalformedNumber;  // one fraction digit too many
-                end else if ((num_next & ~limit) != '0 ||
-                             ((word_q == WordG || word_q == WordM) &&
-                              num_next[6:0] > CodeLimit[6:0])) begin
-                  // above the word's limit: a mask 2^w - 1 (one OR of the high bits), or 99
-                  fail = 1'b1;
-                  fail_code = interp_pkg::ErrValueTooWide;
-                end else begin
-                  num_d = num_next[NumWidth-1:0];
-                  if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
-                  else num_state_d = NumInt;
-                end
-              end else if (ch == interp_pkg::ChPlus || ch == interp_pkg::ChMinus) begin
-                if (!signed_word || num_state_q != NumStart) begin
-                  fail = 1'b1;
-                  fail_code = interp_pkg::ErrMalformedNumber;
-                end else begin
-                  neg_d = ch == interp_pkg::ChMinus;
-                  num_state_d = NumSigned;
-                end
-              end else if (ch == interp_pkg::ChDot) begin
-                if (!fractional_word || num_state_q != NumInt) begin
-                  fail = 1'b1;
-                  fail_code = interp_pkg::ErrMalformedNumber;
-                end else begin
-                  num_state_d = NumFrac;
-                end
-              end else begin
-                // Any other character ends the word being read: check and commit it first.
-                if (word_q != WordNone) begin
-                  word_d = WordNone;
-                  if (!word_complete) begin
-                    word_ok = 1'b0;
-                    fail_code = interp_pkg::ErrMalformedNumber;
-                  end else begin
-                    unique case (word_q)
-                      WordN: n_d = num_q[SeqWidth-1:0];
-                      WordG: begin
-                        if (num_q >= NumWidth'(1) && num_q <= NumWidth'(3)) begin
-                          motion_d = num_q[1:0];  // G01, G02, G03
-                          motion_blk_d = 1'b1;
-                        end else if (!(num_q == NumWidth'(17) || num_q == NumWidth'(21) ||
-                                       num_q == NumWidth'(91) || num_q == NumWidth'(93))) begin
-                          word_ok = 1'b0;
-                          fail_code = interp_pkg::ErrUnsupportedCode;
-                        end
-                      end
-                      WordM: begin
-                        if (num_q == NumWidth'(2) || num_q == NumWidth'(30)) begin
-                          end_blk_d = 1'b1;
-                        end else begin
-                          word_ok = 1'b0;
-                          fail_code = interp_pkg::ErrUnsupportedCode;
-                        end
-                      end
-                      WordX: begin
-                        dx_d = num_q[IncWidth-1:0];
-                        dx_neg_d = neg_q;
+              if (word_err) begin
+                fail = 1'b1;
+                fail_code = word_err_code;
+                fail_offset = word_err_offset;
+              end else if (delimiter) begin
+                // The word this character ends is committed first.
+                if (word_end) begin
+                  unique case (word_letter)
+                    interp_pkg::ChN: n_d = word_value[SeqWidth-1:0];
+                    interp_pkg::ChG: begin
+                      if (word_value >= NumWidth'(1) && word_value <= NumWidth'(3)) begin
+                        motion_d = word_value[1:0];  // G01, G02, G03
                         motion_blk_d = 1'b1;
+                      end else if (!(word_value == NumWidth'(17) || word_value == NumWidth'(21) ||
+                                     word_value == NumWidth'(91) || word_value == NumWidth'(93))) begin
+                        word_ok = 1'b0;
                       end
-                      WordY: begin
-                        dy_d = num_q[IncWidth-1:0];
-                        dy_neg_d = neg_q;
-                        motion_blk_d = 1'b1;
-                      end
-                      WordI: begin
-                        i_d = num_q[IncWidth-1:0];
-                        i_neg_d = neg_q;
-                        motion_blk_d = 1'b1;
-                      end
-                      WordJ: begin
-                        j_d = num_q[IncWidth-1:0];
-                        j_neg_d = neg_q;
-                        motion_blk_d = 1'b1;
-                      end
-                      default: feed_d = num_q[FeedWidth-1:0];  // WordF
-                    endcase
-                  end
+                    end
+                    interp_pkg::ChM: begin
+                      if (word_value == NumWidth'(2) || word_value == NumWidth'(30)) end_blk_d = 1'b1;
+                      else word_ok = 1'b0;
+                    end
+                    interp_pkg::ChX: begin
+                      dx_d = word_value[IncWidth-1:0];
+                      dx_neg_d = word_neg;
+                      motion_blk_d = 1'b1;
+                    end
+                    interp_pkg::ChY: begin
+                      dy_d = word_value[IncWidth-1:0];
+                      dy_neg_d = word_neg;
+                      motion_blk_d = 1'b1;
+                    end
+                    interp_pkg::ChI: begin
+                      i_d = word_value[IncWidth-1:0];
+                      i_neg_d = word_neg;
+                      motion_blk_d = 1'b1;
+                    end
+                    interp_pkg::ChJ: begin
+                      j_d = word_value[IncWidth-1:0];
+                      j_neg_d = word_neg;
+                      motion_blk_d = 1'b1;
+                    end
+                    default: feed_d = word_value[FeedWidth-1:0];  // F
+                  endcase
                   if (!word_ok) begin
                     fail = 1'b1;
-                    fail_offset = word_offset_q;
+                    fail_code = interp_pkg::ErrUnsupportedCode;
+                    fail_offset = word_offset;
                   end
                 end
                 // Then the character itself.
                 if (word_ok) begin
-                  if (ch == interp_pkg::ChN || ch == interp_pkg::ChG || ch == interp_pkg::ChM ||
-                      ch == interp_pkg::ChX || ch == interp_pkg::ChY || ch == interp_pkg::ChI ||
-                      ch == interp_pkg::ChJ || ch == interp_pkg::ChF) begin
+                  if (word_start) begin
                     if (ch == interp_pkg::ChN && n_seen_q) begin
                       fail = 1'b1;
                       // a second N: the LF is missing
                       fail_code = interp_pkg::ErrMissingEndOfBlock;
                     end else begin
-                      unique case (ch)
-                        interp_pkg::ChN:     word_d = WordN;
-                        interp_pkg::ChG:     word_d = WordG;
-                        interp_pkg::ChM:     word_d = WordM;
-                        interp_pkg::ChX:     word_d = WordX;
-                        interp_pkg::ChY:     word_d = WordY;
-                        interp_pkg::ChI:     word_d = WordI;
-                        interp_pkg::ChJ:     word_d = WordJ;
-                        default: word_d = WordF;
-                      endcase
                       if (ch == interp_pkg::ChN) n_seen_d = 1'b1;
-                      any_word_d    = 1'b1;
-                      num_state_d   = NumStart;
-                      num_d         = '0;
-                      neg_d         = 1'b0;
-                      frac_count_d  = '0;
-                      word_offset_d = frame_count_q;
+                      any_word_d = 1'b1;
                     end
                   end else if (ch == interp_pkg::ChLf) begin
                     if (motion_blk_d) begin
@@ -426,7 +327,7 @@ module tape_decoder #(
           if (arc_err) begin
             fail = 1'b1;
             fail_code = arc_code;
-            fail_offset = frame_count_q - 1'b1;  // the block's LF, the last frame processed
+            fail_offset = offset - 1'b1;  // the block's LF, the last frame processed
           end else begin
             state_d  = StHold;
             k_d      = arc_k;
@@ -456,20 +357,6 @@ module tape_decoder #(
     end
   end
 
-  // Input register: a new frame is taken while the previous one is processed. Kept apart
-  // from the parser above, which then depends on registers only (a simulator re-evaluates
-  // input-dependent logic on every input change).
-  always_comb begin
-    in_frame_d = in_frame_q;
-    in_valid_d = in_valid_q && !take;
-    if (frame_valid_i && ready_q) begin
-      in_frame_d = frame_i;
-      in_valid_d = 1'b1;
-    end
-    ready_d = state_next != StError &&
-              !((state_next == StHold || state_next == StArc) && in_valid_d);
-  end
-
   // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N and
   // sums S = F * N. Its result stays in its registers until the next arc starts, i.e. for
   // the whole HOLD that follows.
@@ -482,24 +369,11 @@ module tape_decoder #(
     .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
   );
 
-  // The parser's registers change only when a frame is processed, an arc is prepared, a
-  // held block is handed over or the tape has ended (update); the input register changes
-  // every clock.
-
+  // The registers change only when a frame is processed, an arc is prepared, a held block
+  // is handed over or the tape has ended (update).
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       state_q       <= StLeader;
-      in_frame_q    <= '0;
-      in_valid_q    <= 1'b0;
-      tape_end_q    <= 1'b0;
-      ready_q       <= 1'b1;
-      frame_count_q <= '0;
-      word_q        <= WordNone;
-      num_state_q   <= NumStart;
-      num_q         <= '0;
-      neg_q         <= 1'b0;
-      frac_count_q  <= '0;
-      word_offset_q <= '0;
       n_q           <= '0;
       motion_q      <= interp_pkg::MotionLine;
       feed_q        <= '0;
@@ -517,42 +391,28 @@ module tape_decoder #(
       err_code_q    <= '0;
       err_block_q   <= '0;
       err_offset_q  <= '0;
-    end else begin
-      in_frame_q    <= in_frame_d;
-      in_valid_q    <= in_valid_d;
-      tape_end_q    <= tape_end_i;
-      ready_q       <= ready_d;
-      if (update) begin
-          state_q       <= state_d;
-          frame_count_q <= frame_count_d;
-          word_q        <= word_d;
-          num_state_q   <= num_state_d;
-          num_q         <= num_d;
-          neg_q         <= neg_d;
-          frac_count_q  <= frac_count_d;
-          word_offset_q <= word_offset_d;
-          n_q           <= n_d;
-          motion_q      <= motion_d;
-          feed_q        <= feed_d;
-          dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
-          dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
-          i_q  <= i_d;   i_neg_q  <= i_neg_d;
-          j_q  <= j_d;   j_neg_q  <= j_neg_d;
-          k_q           <= k_d;
-          grow_x_q      <= grow_x_d;
-          grow_y_q      <= grow_y_d;
-          n_seen_q      <= n_seen_d;
-          any_word_q    <= any_word_d;
-          motion_blk_q  <= motion_blk_d;
-          end_blk_q     <= end_blk_d;
-          err_code_q    <= err_code_d;
-          err_block_q   <= err_block_d;
-          err_offset_q  <= err_offset_d;
-        end
+    end else if (update) begin
+      state_q       <= state_d;
+      n_q           <= n_d;
+      motion_q      <= motion_d;
+      feed_q        <= feed_d;
+      dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
+      dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
+      i_q  <= i_d;   i_neg_q  <= i_neg_d;
+      j_q  <= j_d;   j_neg_q  <= j_neg_d;
+      k_q           <= k_d;
+      grow_x_q      <= grow_x_d;
+      grow_y_q      <= grow_y_d;
+      n_seen_q      <= n_seen_d;
+      any_word_q    <= any_word_d;
+      motion_blk_q  <= motion_blk_d;
+      end_blk_q     <= end_blk_d;
+      err_code_q    <= err_code_d;
+      err_block_q   <= err_block_d;
+      err_offset_q  <= err_offset_d;
     end
   end
 
-  assign frame_ready_o = ready_q;
   assign blk_valid_o   = state_q == StHold;
   assign blk_n_o       = n_q;
   assign blk_motion_o  = motion_q;

@@ -14,7 +14,7 @@
 #include <limits>
 
 #include "dda_circle.h"
-#include "golden_decoder.h"
+#include "tape_decoder.h"
 #include "interp_ports.h"
 
 namespace ncinterp {

@@ -1,6 +1,7 @@
 // Tape decoder of the golden model; the rules are docs/interpolator.md section 3 and the
-// code follows rtl/tape_decoder.sv decision by decision (same priorities, same offsets).
-#include "golden_decoder.h"
+// code follows rtl/tape_decoder.sv, tape_frame_input.sv and tape_word_parser.sv decision by
+// decision (same priorities, same offsets), in their three sections.
+#include "tape_decoder.h"
 
 namespace ncinterp {
 
@@ -44,6 +45,10 @@ void GoldenTapeDecoder::reset() {
   err_offset_ = 0;
 }
 
+// ---------------------------------------------------------------------------------------
+// Frame input (rtl/tape_frame_input.sv): input register, parity, offset. edge() also
+// dispatches the clock to the block assembly, as tape_decoder.sv does.
+
 void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
   const bool process = in_valid_ && state_ != State::kHold && state_ != State::kArc &&
                        state_ != State::kError;
@@ -65,17 +70,6 @@ void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
   tape_end_q_ = in.tape_end;
   ready_ = state_ != State::kError &&
            !((state_ == State::kHold || state_ == State::kArc) && in_valid_);
-}
-
-void GoldenTapeDecoder::arc_edge() {
-  const ArcPrepare::Result r = arc_.edge(block_.arc_words(), block_.feed);
-  if (!r.done) return;
-  if (r.error != TapeError::kNone) {
-    fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read
-  } else {
-    block_.step = arc_.step();
-    state_ = State::kHold;
-  }
 }
 
 void GoldenTapeDecoder::process_frame(uint8_t frame) {
@@ -103,33 +97,8 @@ void GoldenTapeDecoder::process_frame(uint8_t frame) {
   }
 }
 
-void GoldenTapeDecoder::body_character(char c, uint32_t offset) {
-  if (c == ' ' || c == '\r') return;
-  if (c >= '0' && c <= '9') return digit(static_cast<unsigned>(c - '0'), offset);
-  if (c == '+' || c == '-') return sign(c == '-', offset);
-  if (c == '.') return dot(offset);
-  // Any other character ends the word being read; the word is checked first.
-  if (word_ != Word::kNone && !finish_word()) return;
-  switch (c) {
-    case 'N':
-      if (n_seen_) return fail(TapeError::kMissingEndOfBlock, offset);
-      n_seen_ = true;
-      return start_word(Word::kN, offset);
-    case 'G': return start_word(Word::kG, offset);
-    case 'M': return start_word(Word::kM, offset);
-    case 'X': return start_word(Word::kX, offset);
-    case 'Y': return start_word(Word::kY, offset);
-    case 'I': return start_word(Word::kI, offset);
-    case 'J': return start_word(Word::kJ, offset);
-    case 'F': return start_word(Word::kF, offset);
-    case '\n': return end_of_block(offset);
-    case '(': state_ = State::kComment; return;
-    case '%':
-      return fail(any_word_ ? TapeError::kMissingEndOfBlock : TapeError::kTruncatedTape,
-                  offset);
-    default: return fail(TapeError::kUnknownCharacter, offset);
-  }
-}
+// ---------------------------------------------------------------------------------------
+// Word parser (rtl/tape_word_parser.sv): number syntax and each word's limit.
 
 uint64_t GoldenTapeDecoder::limit(Word w) const {
   switch (w) {
@@ -176,7 +145,6 @@ void GoldenTapeDecoder::dot(uint32_t offset) {
 }
 
 void GoldenTapeDecoder::start_word(Word w, uint32_t offset) {
-  any_word_ = true;
   word_ = w;
   num_state_ = Num::kStart;
   num_ = 0;
@@ -185,17 +153,73 @@ void GoldenTapeDecoder::start_word(Word w, uint32_t offset) {
   word_offset_ = offset;
 }
 
-// Checks the word just ended and commits its value; false after raising an error.
-bool GoldenTapeDecoder::finish_word() {
+// The word an address letter starts (kNone: not an address letter).
+GoldenTapeDecoder::Word GoldenTapeDecoder::letter_word(char c) {
+  switch (c) {
+    case 'N': return Word::kN;
+    case 'G': return Word::kG;
+    case 'M': return Word::kM;
+    case 'X': return Word::kX;
+    case 'Y': return Word::kY;
+    case 'I': return Word::kI;
+    case 'J': return Word::kJ;
+    case 'F': return Word::kF;
+    default: return Word::kNone;
+  }
+}
+
+// The word being read has its whole number (all its fraction digits).
+bool GoldenTapeDecoder::word_complete() const {
+  const bool fractional = word_ != Word::kN && word_ != Word::kG && word_ != Word::kM;
+  return fractional ? num_state_ == Num::kFrac && frac_count_ == fraction_digits(word_)
+                    : num_state_ == Num::kInt;
+}
+
+// ---------------------------------------------------------------------------------------
+// Block assembly and error capture (rtl/tape_decoder.sv).
+
+void GoldenTapeDecoder::body_character(char c, uint32_t offset) {
+  if (c == ' ' || c == '\r') return;
+  if (c >= '0' && c <= '9') return digit(static_cast<unsigned>(c - '0'), offset);
+  if (c == '+' || c == '-') return sign(c == '-', offset);
+  if (c == '.') return dot(offset);
+  // Any other character ends the word being read; the word is checked first.
+  if (word_ != Word::kNone && !end_word()) return;
+  const Word w = letter_word(c);
+  if (w != Word::kNone) {
+    if (w == Word::kN) {
+      if (n_seen_) return fail(TapeError::kMissingEndOfBlock, offset);  // the LF is missing
+      n_seen_ = true;
+    }
+    any_word_ = true;
+    return start_word(w, offset);
+  }
+  switch (c) {
+    case '\n': return end_of_block(offset);
+    case '(': state_ = State::kComment; return;
+    case '%':
+      return fail(any_word_ ? TapeError::kMissingEndOfBlock : TapeError::kTruncatedTape,
+                  offset);
+    default: return fail(TapeError::kUnknownCharacter, offset);
+  }
+}
+
+// The word being read ends: the parser checks it is complete, then its value is committed
+// to the block. False after raising an error.
+bool GoldenTapeDecoder::end_word() {
   const Word w = word_;
+  const bool complete = word_complete();
   word_ = Word::kNone;
-  const bool fractional = w != Word::kN && w != Word::kG && w != Word::kM;
-  const bool complete = fractional ? num_state_ == Num::kFrac && frac_count_ == fraction_digits(w)
-                                   : num_state_ == Num::kInt;
   if (!complete) {
     fail(TapeError::kMalformedNumber, word_offset_);
     return false;
   }
+  return commit_word(w);
+}
+
+// Gives the word its meaning in the block; false after raising an error (an unsupported G
+// or M code, at the word's letter).
+bool GoldenTapeDecoder::commit_word(Word w) {
   const uint32_t value32 = static_cast<uint32_t>(num_);
   switch (w) {
     case Word::kN: block_.n = value32; break;
@@ -242,6 +266,17 @@ void GoldenTapeDecoder::end_of_block(uint32_t offset) {
   }
   if (end_block_) state_ = State::kEnd;
   clear_block();
+}
+
+void GoldenTapeDecoder::arc_edge() {
+  const ArcPrepare::Result r = arc_.edge(block_.arc_words(), block_.feed);
+  if (!r.done) return;
+  if (r.error != TapeError::kNone) {
+    fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read
+  } else {
+    block_.step = arc_.step();
+    state_ = State::kHold;
+  }
 }
 
 void GoldenTapeDecoder::handoff() {

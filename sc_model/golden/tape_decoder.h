@@ -1,10 +1,12 @@
-// Tape decoder of the golden model: the C++ twin of rtl/tape_decoder.sv.
+// Tape decoder of the golden model: the C++ twin of rtl/tape_decoder.sv and its two parts.
 // Idea: frames -> words -> one decoded motion block at a time, with the same registers and
-// the same next-state rules as the RTL (docs/interpolator.md, section 3), including the
-// input register in front of the parser. An arc block is checked and dry-run by ArcPrepare
-// (the twin of rtl/arc_prepare.sv) before it is held. edge() is called only on clocks where
-// something happens (quiet() is false), so the decoder stays off the golden model's hot
-// path.
+// the same next-state rules as the RTL (docs/interpolator.md, section 3). The members and
+// tape_decoder.cpp come in the RTL's three sections: "Frame input" (rtl/tape_frame_input.sv:
+// input register, parity, offset), "Word parser" (rtl/tape_word_parser.sv: number syntax
+// and limits) and "Block assembly and error capture" (rtl/tape_decoder.sv itself). An arc
+// block is checked and dry-run by ArcPrepare (the twin of rtl/arc_prepare.sv) before it is
+// held. edge() is called only on clocks where something happens (quiet() is false), so the
+// decoder stays off the golden model's hot path.
 #pragma once
 #include <cstdint>
 
@@ -65,34 +67,41 @@ class GoldenTapeDecoder {
   enum class Word : uint8_t { kNone, kN, kG, kM, kX, kY, kI, kJ, kF };
   enum class Num : uint8_t { kStart, kSigned, kInt, kFrac };
 
+  // Frame input.
   void process_frame(uint8_t frame);
-  void arc_edge();
-  void handoff();
-  void body_character(char c, uint32_t offset);
+  // Word parser.
   void digit(unsigned d, uint32_t offset);
   void sign(bool negative, uint32_t offset);
   void dot(uint32_t offset);
+  static Word letter_word(char c);
   void start_word(Word w, uint32_t offset);
-  bool finish_word();
-  void end_of_block(uint32_t offset);
-  void clear_block();
-  void fail(TapeError code, uint32_t offset);
+  bool word_complete() const;
   uint64_t limit(Word w) const;
   unsigned fraction_digits(Word w) const;
+  // Block assembly and error capture.
+  void body_character(char c, uint32_t offset);
+  bool end_word();
+  bool commit_word(Word w);
+  void end_of_block(uint32_t offset);
+  void arc_edge();
+  void handoff();
+  void clear_block();
+  void fail(TapeError code, uint32_t offset);
 
   // Parameters.
   unsigned frac_digits_, feed_frac_digits_;
   uint64_t inc_limit_, feed_limit_, seq_limit_;
   uint32_t offset_mask_;
 
+  // Block assembly: the decoder's state.
   State state_ = State::kLeader;
-  // Input register: a frame taken from the reader, processed at the next edge.
+  // Frame input. Input register: a frame taken from the reader, processed at the next edge.
   uint8_t in_frame_ = 0;
   bool in_valid_ = false;
   bool tape_end_q_ = false;  // tape_end one clock late
   bool ready_ = true;        // frame_ready (a register)
   uint32_t frame_count_ = 0;  // offset of the next frame
-  // Word being read.
+  // Word parser: the word being read.
   Word word_ = Word::kNone;
   Num num_state_ = Num::kStart;
   uint64_t num_ = 0;

@@ -4,7 +4,7 @@
 // inside one frame (parity, then the word the frame ends, then the frame's own character)
 // and the same error codes, blocks and offsets; arc blocks are checked at their LF like the
 // decoder's arc preparation does (docs/circle-dda.md section 2). Written independently of
-// the golden decoder (sc_model/golden/golden_decoder.cpp, arc_geometry.cpp); tests/sw/host/tape
+// the golden decoder (sc_model/golden/tape_decoder.cpp, arc_geometry.cpp); tests/sw/host/tape
 // cross-checks the two on thousands of damaged tapes, so a tape this reader accepts is a
 // tape the machine plays.
 #include <cstdio>

@@ -1,0 +1,222 @@
+// Tape decoder, word parser (docs/interpolator.md 3.2): characters -> words N G M X Y I J F
+// with their numbers, in the strict syntax where every rule is one error.
+//
+// What: for each body character (char_valid_i: a frame of the block body that passed the
+// parity check) it either extends the number being read (digit, sign, decimal point, checked
+// against the word's syntax and its register's limit), ignores it (space, CR), or ends the
+// word: any other character is a delimiter (delimiter_o). At a delimiter the word being read
+// is checked to be complete and handed to the block assembly (word_end_o with its letter,
+// value, sign and the offset of its letter); an address letter then starts the next word
+// (word_start_o). A syntax error (err_o) names its code and offset: the character's, or the
+// word's letter for an incomplete word.
+// Idea: the number is read as an integer in basic length units: exactly FracDigits fraction
+// digits for X Y I J (FeedFracDigits for F), none for N G M, so no scaling is ever needed.
+// A digit is checked against the word's limit 2^w - 1 in NumWidth + 4 bits (num * 10 + 9
+// cannot overflow them): one OR over the high bits, and <= 99 for the G and M codes.
+// The block assembly (tape_decoder.sv) gives the words their meaning; after an error the
+// decoder stops, and this module's registers no longer matter.
+// Golden twin: the section "Word parser" of GoldenTapeDecoder
+// (sc_model/golden/tape_decoder.cpp: digit(), sign(), dot(), start_word(), word_complete()).
+module tape_word_parser #(
+  parameter int IncWidth       = 16,
+  parameter int FracDigits     = 3,
+  parameter int FeedWidth      = 32,
+  parameter int FeedFracDigits = 3,
+  parameter int SeqWidth       = 20,
+  parameter int OffsetWidth    = 32,
+  // Width of the number read: the widest register a word fills (IncWidth, FeedWidth,
+  // SeqWidth) and at least 7 bits (the G and M codes).
+  parameter int NumWidth       = 32
+) (
+  input  logic                   clk_i,
+  input  logic                   rst_ni,
+  // A character of the block body is processed at this edge (parity checked), its offset.
+  input  logic                   char_valid_i,
+  input  logic [6:0]             char_i,
+  input  logic [OffsetWidth-1:0] offset_i,
+  // The character breaks the number syntax or the word's limit (valid with char_valid_i),
+  // with the error's offset: the character's, or the word's letter for an incomplete word.
+  output logic                   err_o,
+  output logic [3:0]             err_code_o,
+  output logic [OffsetWidth-1:0] err_offset_o,
+  // The character ends the word being read, if any (not a digit, sign, point or blank).
+  output logic                   delimiter_o,
+  // At a delimiter without err_o: a complete word ends (its letter interp_pkg::ChN ...,
+  // value, sign and its letter's offset); an address letter starts the next word.
+  output logic                   word_end_o,
+  output logic [6:0]             word_letter_o,
+  output logic [NumWidth-1:0]    word_value_o,
+  output logic                   word_neg_o,
+  output logic [OffsetWidth-1:0] word_offset_o,
+  output logic                   word_start_o
+);
+
+  localparam int WideWidth = NumWidth + 4;
+  localparam logic [WideWidth-1:0] IncLimit  = {{(WideWidth - IncWidth){1'b0}}, {IncWidth{1'b1}}};
+  localparam logic [WideWidth-1:0] FeedLimit = {{(WideWidth - FeedWidth){1'b0}}, {FeedWidth{1'b1}}};
+  localparam logic [WideWidth-1:0] SeqLimit  = {{(WideWidth - SeqWidth){1'b0}}, {SeqWidth{1'b1}}};
+  localparam logic [WideWidth-1:0] CodeLimit = WideWidth'(99);  // G and M codes
+  localparam logic [WideWidth-1:0] CodeMask  = WideWidth'(127);
+  localparam logic [3:0] FracCount     = 4'(FracDigits);
+  localparam logic [3:0] FeedFracCount = 4'(FeedFracDigits);
+
+  typedef enum logic [3:0] {
+    WordNone = 4'd0, WordN = 4'd1, WordG = 4'd2, WordM = 4'd3, WordX = 4'd4,
+    WordY = 4'd5, WordI = 4'd6, WordJ = 4'd7, WordF = 4'd8
+  } word_e;
+
+  typedef enum logic [1:0] {
+    NumStart  = 2'd0,  // right after the letter: a sign or a digit may come
+    NumSigned = 2'd1,  // after the sign: a digit must come
+    NumInt    = 2'd2,  // integer digits
+    NumFrac   = 2'd3   // after '.': fraction digits
+  } num_e;
+
+  // The word being read: its letter, number syntax state, magnitude, sign, the count of
+  // fraction digits read and the offset of its letter (for errors found at the word's end).
+  word_e                  word_q, word_d;
+  num_e                   num_state_q, num_state_d;
+  logic [NumWidth-1:0]    num_q, num_d;
+  logic                   neg_q, neg_d;
+  logic [3:0]             frac_count_q, frac_count_d;
+  logic [OffsetWidth-1:0] word_offset_q, word_offset_d;
+
+  logic                 is_digit, is_sign, is_dot, is_blank, is_letter;
+  logic                 signed_word, fractional_word, word_complete;
+  logic [3:0]           frac_limit;
+  logic [WideWidth-1:0] limit, num_next;  // limit: the word's 2^w - 1 (127 for G and M)
+  word_e                letter_word;      // the word an address letter starts
+
+  // The character's class and the word's properties.
+  always_comb begin
+    is_blank  = char_i == interp_pkg::ChSpace || char_i == interp_pkg::ChCr;
+    is_digit  = char_i >= interp_pkg::ChZero && char_i <= interp_pkg::ChNine;
+    is_sign   = char_i == interp_pkg::ChPlus || char_i == interp_pkg::ChMinus;
+    is_dot    = char_i == interp_pkg::ChDot;
+    is_letter = 1'b1;
+    unique case (char_i)
+      interp_pkg::ChN: letter_word = WordN;
+      interp_pkg::ChG: letter_word = WordG;
+      interp_pkg::ChM: letter_word = WordM;
+      interp_pkg::ChX: letter_word = WordX;
+      interp_pkg::ChY: letter_word = WordY;
+      interp_pkg::ChI: letter_word = WordI;
+      interp_pkg::ChJ: letter_word = WordJ;
+      interp_pkg::ChF: letter_word = WordF;
+      default: begin
+        letter_word = WordNone;
+        is_letter   = 1'b0;
+      end
+    endcase
+    signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
+    fractional_word = signed_word || word_q == WordF;
+    frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
+    unique case (word_q)
+      WordN:        limit = SeqLimit;
+      WordG, WordM: limit = CodeMask;
+      WordF:        limit = FeedLimit;
+      default:      limit = IncLimit;
+    endcase
+    word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
+                                    : (num_state_q == NumInt);
+    num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(char_i[3:0]);  // *10 + d
+  end
+
+  assign delimiter_o = !(is_blank || is_digit || is_sign || is_dot);
+
+  // The checks, and the next word. Clocks without a body character (most clocks: the reader
+  // is slow) evaluate nothing: the registers keep their values (the always_ff's enable), so
+  // the next-state values are don't-care ('x), which the verilated model skips and synthesis
+  // folds away.
+  always_comb begin
+    {word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d} = 'x;
+    err_o        = 1'b0;
+    err_code_o   = interp_pkg::ErrMalformedNumber;
+    err_offset_o = offset_i;
+    if (char_valid_i) begin
+      word_d        = word_q;
+      num_state_d   = num_state_q;
+      num_d         = num_q;
+      neg_d         = neg_q;
+      frac_count_d  = frac_count_q;
+      word_offset_d = word_offset_q;
+      if (is_digit) begin
+        if (word_q == WordNone || (num_state_q == NumFrac && frac_count_q == frac_limit)) begin
+          err_o = 1'b1;  // a digit outside a word, or one fraction digit too many
+        end else if ((num_next & ~limit) != '0 ||
+                     ((word_q == WordG || word_q == WordM) && num_next[6:0] > CodeLimit[6:0])) begin
+          err_o = 1'b1;  // above the word's limit: a mask 2^w - 1 (one OR of the high bits), or 99
+          err_code_o = interp_pkg::ErrValueTooWide;
+        end else begin
+          num_d = num_next[NumWidth-1:0];
+          if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
+          else num_state_d = NumInt;
+        end
+      end else if (is_sign) begin
+        if (!signed_word || num_state_q != NumStart) begin
+          err_o = 1'b1;
+        end else begin
+          neg_d = char_i == interp_pkg::ChMinus;
+          num_state_d = NumSigned;
+        end
+      end else if (is_dot) begin
+        if (!fractional_word || num_state_q != NumInt) err_o = 1'b1;
+        else num_state_d = NumFrac;
+      end else if (!is_blank) begin
+        // A delimiter: the word being read ends (complete, or an error at its letter); an
+        // address letter starts the next one.
+        if (word_q != WordNone && !word_complete) begin
+          err_o = 1'b1;
+          err_offset_o = word_offset_q;
+        end
+        word_d = letter_word;
+        if (is_letter) begin
+          num_state_d   = NumStart;
+          num_d         = '0;
+          neg_d         = 1'b0;
+          frac_count_d  = '0;
+          word_offset_d = offset_i;
+        end
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      word_q        <= WordNone;
+      num_state_q   <= NumStart;
+      num_q         <= '0;
+      neg_q         <= 1'b0;
+      frac_count_q  <= '0;
+      word_offset_q <= '0;
+    end else if (char_valid_i) begin
+      word_q        <= word_d;
+      num_state_q   <= num_state_d;
+      num_q         <= num_d;
+      neg_q         <= neg_d;
+      frac_count_q  <= frac_count_d;
+      word_offset_q <= word_offset_d;
+    end
+  end
+
+  // The word handed over at a delimiter: its letter, as on tape.
+  always_comb begin
+    unique case (word_q)
+      WordN:   word_letter_o = interp_pkg::ChN;
+      WordG:   word_letter_o = interp_pkg::ChG;
+      WordM:   word_letter_o = interp_pkg::ChM;
+      WordX:   word_letter_o = interp_pkg::ChX;
+      WordY:   word_letter_o = interp_pkg::ChY;
+      WordI:   word_letter_o = interp_pkg::ChI;
+      WordJ:   word_letter_o = interp_pkg::ChJ;
+      default: word_letter_o = interp_pkg::ChF;  // WordF (WordNone: no word_end_o)
+    endcase
+  end
+
+  assign word_end_o    = delimiter_o && word_q != WordNone && word_complete;
+  assign word_value_o  = num_q;
+  assign word_neg_o    = neg_q;
+  assign word_offset_o = word_offset_q;
+  assign word_start_o  = delimiter_o && is_letter;
+
+endmodule
