@@ -1,14 +1,16 @@
 // `ncinterp bitstream --board icestick|icebreaker -o X.bin [--work-dir D]`: the board's
 // bitstream from the repository's RTL (rtl/board/board_top.sv and the interpolator) and
 // .pcf (sw/tools/bitstream/bitstream.h). Prints the logic cells used and the Fmax against the
-// board clock; exit 1 with one clear line when the design does not fit, misses the board
-// clock or a tool fails (the tools' logs stay in the work directory).
+// board clock. Exit (README, "Exit codes"): 0 built; 2 the design does not fit or misses the
+// board clock; 4 a tool failed (the tools' logs stay in the work directory); 1 usage or an
+// output that cannot be written, found before any tool runs.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "bitstream.h"
 #include "command_registry.h"
+#include "output_set.h"
 
 namespace ncinterp::cli {
 namespace {
@@ -20,13 +22,16 @@ struct BitstreamArgs {
 
 int run(const BitstreamArgs& a) {
   const bitstream::BoardTarget target = bitstream::board_target(a.board);
+  OutputSet outputs;
+  AtomicOutputFile* bin = outputs.add(a.out);
   const std::string work =
       a.work_dir.empty() ? std::filesystem::path(a.out).string() + ".build" : a.work_dir;
-  const bitstream::BitstreamResult r = bitstream::build_bitstream(target, a.out, work, a.seeds);
-  if (!r.ok) {
+  const bitstream::BitstreamResult r = bitstream::build_bitstream(target, bin->temp_path(), work, a.seeds);
+  if (!r.ok()) {
     std::cerr << "ncinterp bitstream: " << r.message << "\n";
-    return 1;
+    return r.failure == bitstream::BitstreamResult::Failure::kDesign ? 2 : 4;
   }
+  outputs.commit();
   std::printf("%s\nbitstream: %s (logs in %s)\n", r.message.c_str(), a.out.c_str(), r.work_dir.c_str());
   return 0;
 }

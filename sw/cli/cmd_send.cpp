@@ -6,10 +6,12 @@
 // stops before a byte while the board holds CTS# high) or IXON (the chip stops on the
 // board's XOFF until XON) does the flow control, so a plain write loop never overruns the
 // board. XON/XOFF bytes are dropped from what the board sends; every other line is a status
-// line (rtl/board/status_line.sv). Progress goes to stderr, only on a terminal. Exit 0 when
-// the board reports the program done; 1 with "TAPE: block N, offset K: message" when it
-// reports an error (the software reader's wording when it finds the same error), when the
-// port closes or the board stays silent longer than --timeout, or on unusable options.
+// line (rtl/board/status_line.sv). Progress goes to stderr, only on a terminal. Exit
+// (README, "Exit codes"): 0 when the board reports the program done; 1 with "TAPE: block N,
+// offset K: message" when it reports a tape error (the software reader's wording when it
+// finds the same error), or on unusable options; 4 when the port closes, or nothing moves
+// (no byte read, none written: the board silent, or holding the flow control) for longer
+// than --timeout.
 #include <fcntl.h>
 #include <poll.h>
 #include <termios.h>
@@ -92,8 +94,8 @@ int run(const SendArgs& a) {
   size_t sent = 0;
   std::string line;
   std::string last_block = "-";
-  auto last_heard = std::chrono::steady_clock::now();
-  auto last_progress = last_heard - std::chrono::seconds(1);
+  auto last_moved = std::chrono::steady_clock::now();  // a byte read or written
+  auto last_progress = last_moved - std::chrono::seconds(1);
   bool progress_shown = false;
   const auto clear_progress = [&] {
     if (progress_shown) std::fprintf(stderr, "\r%70s\r", "");
@@ -105,7 +107,10 @@ int run(const SendArgs& a) {
     if ((p.revents & POLLOUT) && sent < frames.size()) {
       const size_t chunk = std::min<size_t>(64, frames.size() - sent);
       const ssize_t w = write(port.fd(), frames.data() + sent, chunk);
-      if (w > 0) sent += static_cast<size_t>(w);
+      if (w > 0) {
+        sent += static_cast<size_t>(w);
+        last_moved = std::chrono::steady_clock::now();
+      }
       else if (w < 0 && errno != EAGAIN && errno != EINTR)
         throw std::runtime_error(a.port + ": write: " + std::strerror(errno));
     }
@@ -115,9 +120,9 @@ int run(const SendArgs& a) {
       if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
         clear_progress();
         std::cerr << a.tape << ": " << a.port << " closed before the board reported the end of the program\n";
-        return 1;
+        return 4;
       }
-      if (n > 0) last_heard = std::chrono::steady_clock::now();
+      if (n > 0) last_moved = std::chrono::steady_clock::now();
       for (ssize_t i = 0; i < n; ++i) {
         const uint8_t b = buf[i];
         if (b == board::kXon || b == board::kXoff || b == '\r') continue;
@@ -153,11 +158,13 @@ int run(const SendArgs& a) {
       }
     }
     const auto now = std::chrono::steady_clock::now();
-    if (now - last_heard > std::chrono::duration<double>(a.timeout_s) && sent == frames.size()) {
+    if (now - last_moved > std::chrono::duration<double>(a.timeout_s)) {
       clear_progress();
-      std::cerr << a.tape << ": the board said nothing for " << a.timeout_s << " s (last block "
+      std::cerr << a.tape << ": nothing moved for " << a.timeout_s << " s: the board "
+                << (sent == frames.size() ? "said nothing" : "held the flow control") << " after "
+                << std::min(sent, tape_frames) << " of " << tape_frames << " frames (last block "
                 << last_block << ")\n";
-      return 1;
+      return 4;
     }
     if (tty && now - last_progress > std::chrono::milliseconds(200)) {
       last_progress = now;
@@ -177,7 +184,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--flow", args->flow, "Flow control: rtscts (iCEstick) or xonxoff")
       ->check(CLI::IsMember({"rtscts", "xonxoff"}))
       ->capture_default_str();
-  cmd->add_option("--timeout", args->timeout_s, "Give up when the board is silent this long after the tape, s")
+  cmd->add_option("--timeout", args->timeout_s,
+                  "Give up when nothing moves this long (no byte from the board, none sent), s")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->callback([args] { run_command("send", [&] { return run(*args); }); });
 }

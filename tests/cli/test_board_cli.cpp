@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -176,6 +177,35 @@ TEST_F(BoardCli, SendAndBoardSimRefuseUnusableOptionsClearly) {
   EXPECT_EQ(run("board-sim --pty " + path("tty") + " --clock-hz 1e6 --baud 921600"), 1);
   EXPECT_NE(stderr_.find("the board needs 4 to 4095"), std::string::npos) << stderr_;
   EXPECT_FALSE(fs::exists(path("tty")));
+}
+
+// A port that takes the tape and never answers (the board is off, or a wrong device): send
+// gives up after --timeout with exit 4 (the board failed), not 1 (a bad tape), and says how
+// far it got.
+TEST_F(BoardCli, SendToASilentPortExitsFourAfterTheTimeout) {
+  const int master = posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(grantpt(master), 0);
+  ASSERT_EQ(unlockpt(master), 0);
+  const std::string port = ptsname(master);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + port + " --timeout 0.5"), 4) << stderr_;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+  EXPECT_NE(stderr_.find("nothing moved for 0.5 s"), std::string::npos) << stderr_;
+  EXPECT_EQ(stderr_.find('\n'), stderr_.size() - 1) << "more than one line: " << stderr_;
+  close(master);
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + port + " --timeout -1"), 1);
+}
+
+// bitstream checks its output before any tool runs: a directory as -o fails at once, and no
+// work directory is made for it.
+TEST_F(BoardCli, BitstreamRefusesAnUnwritableOutputBeforeTheTools) {
+  fs::create_directory(path("out.bin"));
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(run("bitstream --board icestick -o " + path("out.bin")), 1);
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_NE(stderr_.find(path("out.bin")), std::string::npos) << stderr_;
+  EXPECT_FALSE(fs::exists(path("out.bin.build")));
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "atomic_file.h"
 #include "bitstream_build_paths.h"
 #include "subprocess.h"
 #include "synth_logs.h"
@@ -42,10 +41,12 @@ BoardTarget board_target(const std::string& name) {
   throw std::invalid_argument("unknown board '" + name + "' (icestick, icebreaker)");
 }
 
-BitstreamResult build_bitstream(const BoardTarget& b, const std::string& out, const std::string& work_dir,
+BitstreamResult build_bitstream(const BoardTarget& b, const std::string& bin_path, const std::string& work_dir,
                                 unsigned seeds) {
   BitstreamResult r;
   r.work_dir = work_dir;
+  using Failure = BitstreamResult::Failure;
+  r.failure = Failure::kTool;  // until the verdict
   std::filesystem::create_directories(work_dir);
   const std::string json = work_dir + "/" + b.name + ".json";
   const std::string asc = work_dir + "/" + b.name + ".asc";
@@ -80,6 +81,7 @@ BitstreamResult build_bitstream(const BoardTarget& b, const std::string& out, co
     if (r.logic_cells && r.logic_cells_available && *r.logic_cells > *r.logic_cells_available) {
       r.message = b.name + ": does not fit: the design needs " + std::to_string(*r.logic_cells) +
                   " logic cells, the " + b.part + " has " + std::to_string(*r.logic_cells_available);
+      r.failure = Failure::kDesign;
       return r;
     }
     if (!p.ok()) {
@@ -103,19 +105,18 @@ BitstreamResult build_bitstream(const BoardTarget& b, const std::string& out, co
     cells << best_fmax << " MHz at best over placement seeds 1.." << seeds << " (board clock " << b.clock_mhz
           << " MHz): misses timing";
     r.message = cells.str();
+    r.failure = Failure::kDesign;
     return r;
   }
   cells << *r.fmax_mhz << " MHz (board clock " << b.clock_mhz << " MHz, placement seed " << seed << ")";
 
-  AtomicOutputFile bin(out);
   const std::string ilog = work_dir + "/icepack.log";
-  const ProcessOutcome i = sweep::run_process({"icepack", asc, bin.temp_path()}, ilog);
+  const ProcessOutcome i = sweep::run_process({"icepack", asc, bin_path}, ilog);
   if (!i.ok()) {
     r.message = failure("icepack", i, ilog);
     return r;
   }
-  bin.commit();
-  r.ok = true;
+  r.failure = Failure::kNone;
   r.message = cells.str();
   return r;
 }

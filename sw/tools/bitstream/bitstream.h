@@ -5,8 +5,8 @@
 // logs kept in a work directory. The result says plainly why there is no bitstream: the
 // design does not fit (cells needed vs available), misses the board clock, or a tool
 // failed (its first error line). At high utilisation the Fmax depends on the placement
-// seed by a few per cent: seeds are tried in turn (docs/board.md). The .bin is written
-// atomically.
+// seed by a few per cent: seeds are tried in turn (docs/board.md). The caller reserves the
+// .bin before the tools run (an OutputSet) and commits it on success.
 #pragma once
 #include <optional>
 #include <string>
@@ -28,16 +28,20 @@ struct BoardTarget {
 BoardTarget board_target(const std::string& name);
 
 struct BitstreamResult {
-  bool ok = false;
+  // kDesign: the design does not fit the part or misses the board clock; kTool: a tool
+  // could not be run or failed.
+  enum class Failure { kNone, kDesign, kTool };
+  Failure failure = Failure::kNone;
+  bool ok() const { return failure == Failure::kNone; }
   std::optional<unsigned> logic_cells, logic_cells_available;
   std::optional<double> fmax_mhz;
   std::string message;  // the verdict in one line (why it failed, or the summary)
   std::string work_dir;
 };
 
-// Builds `out` for the board; the tools' logs go to work_dir (created). Placement seeds
-// 1..seeds are tried in turn until one meets the board clock.
-BitstreamResult build_bitstream(const BoardTarget& board, const std::string& out,
+// Writes the bitstream for the board to bin_path; the tools' logs go to work_dir
+// (created). Placement seeds 1..seeds are tried in turn until one meets the board clock.
+BitstreamResult build_bitstream(const BoardTarget& board, const std::string& bin_path,
                                 const std::string& work_dir, unsigned seeds = 5);
 
 }  // namespace ncinterp::bitstream

@@ -2,7 +2,7 @@
 # `ncinterp bitstream` tells the truth about a board: builds it and checks the verdict
 # against nextpnr's own utilisation line (its log in the work directory): a design that
 # fits must give exit 0, a non-empty .bin and the cells / Fmax summary; one that does not
-# must give exit 1, the clear "does not fit: the design needs N logic cells, the PART has
+# must give exit 2 (the design fails the board), the clear "does not fit: the design needs N logic cells, the PART has
 # M" line with nextpnr's numbers, and no .bin.
 # Usage: bitstream_verdict.sh NCINTERP BOARD OUT_DIR [must-fit]
 # With "must-fit" a design that does not fit fails the test (the iCEBreaker must fit).
@@ -22,7 +22,7 @@ avail=$(sed -E 's/.*ICESTORM_LC:\s+([0-9]+)\/\s*([0-9]+).*/\2/' <<<"$line")
 echo "nextpnr: $used of $avail logic cells"
 if (( used > avail )); then
   [[ -z $must_fit ]] || { echo "FAIL: $board must fit"; exit 1; }
-  (( code == 1 )) || { echo "FAIL: exit $code for a design that does not fit"; exit 1; }
+  (( code == 2 )) || { echo "FAIL: exit $code for a design that does not fit"; exit 1; }
   grep -q "does not fit: the design needs $used logic cells, the .* has $avail" "$out/$board.stderr" ||
     { echo "FAIL: no clear 'does not fit' message"; exit 1; }
   [[ ! -e $out/$board.bin ]] || { echo "FAIL: a .bin was left behind"; exit 1; }
