@@ -6,8 +6,8 @@
 // of the arc to finish): the squares MSB first by shift-and-add (acc = 2 acc + v * v[b],
 // the other term of the sum of squares added in the next clock), E = B - A - 1 as
 // B + ~A, |E| by ~E + 1, and |E|^2 again by shift-and-add. |E| >= 2^(W+2) fails at once,
-// since 4A < 2^(2W+3). The golden twin is ArcPrepare::check_step() in
-// sc_model/golden/arc_prepare.cpp; the exact formula is arc_end_on_circle().
+// since 4A < 2^(2W+3). The golden twin is ArcRadiusCheck
+// (sc_model/golden/arc_radius_check.h); the exact formula is arc_end_on_circle().
 // Schedule (5W + 5 clocks after start_i):
 //   SumA  2W clocks  acc = 2 acc + x0 x0[b], then acc += y0 y0[b], b = W-1 .. 0; the
 //                    last sum goes to a (A), acc is cleared

@@ -113,12 +113,15 @@ build_smt2() {
     done
   fi
   script+="hierarchy -check -top $harness"$'\n'"proc"$'\n'"flatten"$'\n'
-  # Taps: "// formal-tap: wire = hierarchical.name"
+  # Taps: "// formal-tap: wire = hierarchical.name". -nounset: the tap wire has no driver to
+  # remove, but without it `connect` also cuts the wire's aliases (e.g. the compare wire
+  # proc made for `if (tap)`), which would leave them free: the solver could then choose
+  # them. `check -assert` fails the build on any wire used without a driver.
   local tap
   while read -r tap; do
-    script+="connect -set ${tap%%=*} ${tap#*=}"$'\n'
+    script+="connect -nounset -set ${tap%%=*} ${tap#*=}"$'\n'
   done < <(sed -n 's#^ *// formal-tap: *\([^ =]*\) *= *\([^ ]*\) *$#\1=\2#p' "$formal_dir/$harness.sv")
-  script+="prep -top $harness"$'\n'"async2sync"$'\n'"dffunmap"$'\n'
+  script+="prep -top $harness"$'\n'"async2sync"$'\n'"dffunmap"$'\n'"check -assert"$'\n'
   script+="write_smt2 -wires $out/model.smt2"$'\n'
   printf '%s' "$script" >"$out/model.ys"
   yosys -q -l "$out/yosys.log" -s "$out/model.ys" >/dev/null 2>&1

@@ -61,7 +61,10 @@ PY
   options+=(-dict="$build/tape.dict")
 fi
 log=$build/fuzz-$target.log
-before=$(find "$findings" -type f | wc -l)
+# Findings: crash-, leak-, timeout- and oom- inputs. libFuzzer also saves slow-unit- inputs
+# (over 10 s, -report_slow_units): listed, not counted (the timeout is what makes a hang).
+count_findings() { find "$findings" -type f ! -name 'slow-unit-*' | wc -l; }
+before=$(count_findings)
 echo "fuzzing $target for $seconds s (log: $log)"
 set +e
 # The CPU time next to the wall time: on a shared machine the fuzzer gets less than its hour.
@@ -71,7 +74,8 @@ TIMEFORMAT='%U %S'
     >"$log" 2>&1; } 2>"$build/fuzz-$target.cpu"
 status=$?
 set -e
-after=$(find "$findings" -type f | wc -l)
+after=$(count_findings)
+slow=$(find "$findings" -type f -name 'slow-unit-*' | wc -l)
 last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
 execs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$' || echo "?")
 echo "target:     $target"
@@ -81,5 +85,6 @@ echo "executions: $execs"
 echo "coverage:   $(echo "$last" | grep -oE 'cov: [0-9]+ ft: [0-9]+' || echo '?')"
 echo "corpus:     $(echo "$last" | grep -oE 'corp: [0-9]+/[0-9]+[a-zA-Z]*' || echo '?')"
 echo "findings:   $((after - before)) new in $findings (libFuzzer exit $status)"
+echo "slow units: $slow in $findings (inputs over 10 s; not findings)"
 grep -E 'FUZZ FINDING|ERROR: AddressSanitizer|runtime error|ERROR: libFuzzer|SUMMARY' "$log" | head -5 || true
 [[ $status -eq 0 && $after -eq $before ]]

@@ -6,9 +6,9 @@
 //   every field, until the buffer takes it (blk_ready_i);
 // - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
 //   more than K consecutive clocks unless the decoder is in error or holds a block. K =
-//   max(2^(W+1), 2W + 3) + 2 covers an arc's preparation (max(N, 2W + 3) clocks,
-//   N < 2^(W+1)) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
-//   frames, or an error, and nothing else stalls the reader.
+//   max(2^(W+1), 5W + 5) + 2 covers an arc's preparation (max(N, 5W + 5) clocks,
+//   N < 2^(W+1)) and the clocks around it. So a byte stream ends in a played program, a
+//   held block, waiting for frames, or an error, and nothing else stalls the reader.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
 // preparation's internals (which the area redesign changes). The depth (24 clocks) covers
@@ -31,7 +31,7 @@ module tape_decoder_props #(
 
   localparam int KWidth = $clog2(W + 1);
   localparam int SW = FW + W + 1;
-  localparam int K = ((1 << (W + 1)) > 2 * W + 3 ? (1 << (W + 1)) : 2 * W + 3) + 2;
+  localparam int K = ((1 << (W + 1)) > 5 * W + 5 ? (1 << (W + 1)) : 5 * W + 5) + 2;
   localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
 
   logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y;
