@@ -100,6 +100,8 @@ void check_first_stage(const Contour& contour, const uint8_t* data, size_t size)
   // Within tol: the chord path (before the offset) against the contour, sampled at tol/8;
   // the slack covers the sampling (the measure's polylines are chords of the samples).
   if (res.contour_moves.empty()) return;
+  // Planted bug: the first chord 1 mm too long in X (must be found).
+  if (injected("chord_off_contour")) res.contour_moves.front().to.x += std::lround(1.0 / o.blu_mm);
   const DeviationReport dev =
       measure_deviation(contour, res.contour_start, res.contour_moves, o.blu_mm, o.tol_mm / 8);
   if (!(dev.max_mm <= o.tol_mm * 1.01 + o.blu_mm))

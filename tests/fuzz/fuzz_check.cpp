@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace ncinterp::fuzz {
 
@@ -10,6 +11,11 @@ void fail(const std::string& what) {
   std::fprintf(stderr, "FUZZ FINDING: %s\n", what.c_str());
   std::fflush(stderr);
   std::abort();
+}
+
+bool injected(const char* fault) {
+  static const char* const name = std::getenv("NCINTERP_FUZZ_INJECT");
+  return name != nullptr && std::string(name) == fault;
 }
 
 uint64_t input_hash(const uint8_t* data, size_t size) {

@@ -19,4 +19,8 @@ namespace ncinterp::fuzz {
 // A 64-bit hash of the input (FNV-1a): options chosen per input stay reproducible.
 uint64_t input_hash(const uint8_t* data, size_t size);
 
+// True when NCINTERP_FUZZ_INJECT names this fault: a bug planted on purpose, so a ctest can
+// show that the target's check finds it (tests/fuzz/CMakeLists.txt, fuzz.injected.*).
+bool injected(const char* fault);
+
 }  // namespace ncinterp::fuzz

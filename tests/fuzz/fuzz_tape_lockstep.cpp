@@ -8,7 +8,8 @@
 // names. The work per input is bounded: a fast reader (one clock per frame), a small feed
 // modulus (a block takes at most 2 10^4 clocks, a saturated one 2^k for 2^k iterations),
 // at most kMaxCycles clocks; a run cut there is still compared clock by clock, only the
-// outcome is not. NCINTERP_FUZZ_STATS=1 prints how many inputs ended how (at exit).
+// outcome is not. NCINTERP_FUZZ_STATS=1 prints how many inputs ended how (at exit);
+// NCINTERP_FUZZ_INJECT=wrong_direction plants a fault in the golden model.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -84,6 +85,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.config.feed_modulus = kFeedModulus;
   options.cycles_per_frame = 1;
   options.max_cycles = kMaxCycles;
+  // Planted bug: the golden model's X dir inverted while a block plays (must be found).
+  if (ncinterp::fuzz::injected("wrong_direction"))
+    options.fault = {ncinterp::GoldenInterp::Fault::kWrongDirection, 0, 0};
   const Result r = ncinterp::cosim::run_lockstep(frames, options);
   if (r.end == Result::End::kMismatch)
     ncinterp::fuzz::fail("RTL and golden model differ: " + ncinterp::cosim::describe(*r.mismatch));
