@@ -6,7 +6,7 @@
 // Timing: in_ready_o = empty (a register), so a block is taken at an edge where the
 // buffer is empty, never in the edge that empties it; pop_i empties it at that edge.
 // Golden twin: the section "Block buffer" of GoldenInterp::tick()
-// (sc_model/golden/golden_interp.h).
+// (sc_model/golden/interp_top.h).
 module block_buffer #(
   parameter int Width = 8
 ) (

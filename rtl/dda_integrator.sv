@@ -8,7 +8,7 @@
 // iterate_i the carry (carry_o, combinational) becomes step_o for one clock. dir_o changes
 // only at load edges, so it is valid in every clock with a step and held for the block.
 // Golden twin: the section "Line DDA" of GoldenInterp::tick()
-// (sc_model/golden/golden_interp.h).
+// (sc_model/golden/interp_top.h).
 module dda_integrator #(
   parameter int Width = 16
 ) (

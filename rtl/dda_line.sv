@@ -8,7 +8,7 @@
 // rem_zero_o marks the block's finishing clock (all iterations done), after which
 // interp_top loads the next block or goes idle.
 // Golden twin: the section "Line DDA" of GoldenInterp::tick()
-// (sc_model/golden/golden_interp.h).
+// (sc_model/golden/interp_top.h).
 module dda_line #(
   parameter int IncWidth = 16,
   parameter int KWidth   = $clog2(IncWidth + 1)

@@ -10,7 +10,7 @@
 // and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
 // registers and acts in the same edge as the DDA iteration it triggers.
 // Golden twin: the section "Feed generator" of GoldenInterp::tick()
-// (sc_model/golden/golden_interp.h).
+// (sc_model/golden/interp_top.h).
 module feed_generator #(
   parameter int StepWidth    = 49,
   parameter int ModulusWidth = 48

@@ -6,7 +6,7 @@
 // the machine status. Ports and parameters are the contract
 // of docs/architecture.md; the microarchitecture and the clock-by-clock timing are in
 // docs/interpolator.md, which the golden model (sc_model/golden/) follows too. The golden
-// twin is GoldenInterp (sc_model/golden/golden_interp.h); its tick() holds the twins of
+// twin is GoldenInterp (sc_model/golden/interp_top.h); its tick() holds the twins of
 // block_buffer.sv, feed_generator.sv, dda_line.sv + dda_integrator.sv and
 // position_counter.sv as named sections, and this module's status logic.
 // Timing: every output is a register or a function of registers (Moore). A block loads at

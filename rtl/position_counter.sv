@@ -4,7 +4,7 @@
 // Timing: it counts at the same edge as the step register is set, so after an edge the
 // step output and the position that includes it appear together.
 // Golden twin: the section "Position counters" of GoldenInterp::tick()
-// (sc_model/golden/golden_interp.h).
+// (sc_model/golden/interp_top.h).
 module position_counter #(
   parameter int PosWidth = 32
 ) (

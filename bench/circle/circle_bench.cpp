@@ -8,7 +8,7 @@
 //   feed        arc blocks played by the whole golden interpolator: block time against
 //               1/F, saturation, the decoder's arc preparation against the block time
 // Idea: all numbers come from the same golden classes the interpolator uses
-// (sc_model/golden/dda_circle.h, arc_geometry.h, golden_interp.h), except the scheme
+// (sc_model/golden/dda_circle.h, arc_geometry.h, interp_top.h), except the scheme
 // study, which needs a free-running circle (sw/tools/circle_study/scheme_study.h).
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -22,7 +22,7 @@
 #include "arc_cases.h"
 #include "firststage.h"
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "scheme_study.h"
 #include "tape.h"
 

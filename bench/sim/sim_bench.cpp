@@ -34,7 +34,7 @@
 #include "Vinterp_top.h"
 #include "Vinterp_top_trace.h"
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "lockstep.h"
 #include "tape.h"
 #include "verilated_interp.h"

@@ -13,7 +13,7 @@
 #include "engine_run.h"
 #include "firststage.h"
 #include "geometry/contour.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "reference_contour.h"
 #include "tape/tape.h"
 #include "trajectory_checker.h"

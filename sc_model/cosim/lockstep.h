@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "interp_ports.h"
 
 namespace ncinterp::cosim {

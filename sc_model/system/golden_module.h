@@ -7,7 +7,7 @@
 #pragma once
 #include <systemc>
 
-#include "golden_interp.h"
+#include "interp_top.h"
 
 namespace ncinterp::system {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 
 namespace ncinterp::system {
 

@@ -12,7 +12,7 @@
 #include "arc_geometry.h"
 #include "circle_program.h"
 #include "arc_cases.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "interp_test_support.h"
 
 namespace ncinterp {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "interp_ports.h"
 
 namespace ncinterp::test {

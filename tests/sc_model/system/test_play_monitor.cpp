@@ -7,7 +7,7 @@
 #include <random>
 
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "play_monitor.h"
 #include "play_run.h"
 

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "play_run.h"
 #include "scratch_dir_test.h"
 #include "vcd_header.h"

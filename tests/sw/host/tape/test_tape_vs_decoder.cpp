@@ -10,7 +10,7 @@
 #include <random>
 
 #include "frame_source.h"
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "quadrant_arc.h"
 #include "tape.h"
 

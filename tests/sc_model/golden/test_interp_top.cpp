@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "golden_interp.h"
+#include "interp_top.h"
 #include "interp_test_support.h"
 
 namespace ncinterp {

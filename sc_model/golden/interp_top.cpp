@@ -1,6 +1,6 @@
 // Golden cycle model: the cold paths of GoldenInterp (block load, decoder and buffer
-// activity, status, fault hook). The hot path, tick(), is inline in golden_interp.h.
-#include "golden_interp.h"
+// activity, status, fault hook). The hot path, tick(), is inline in interp_top.h.
+#include "interp_top.h"
 
 #include <stdexcept>
 #include <string>
