@@ -44,7 +44,9 @@ mkdir -p "$build"
 
 corpus=$build/corpus/$target findings=$build/findings/$target
 mkdir -p "$corpus" "$findings"
-options=(-max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1
+# -timeout is wall time per input: 120 s, because on a shared machine a niced fuzzer can be
+# starved for tens of seconds (a 0.7 s input once "timed out" at 30 s at load average 6).
+options=(-max_total_time="$seconds" -timeout=120 -rss_limit_mb=2048 -print_final_stats=1
          -artifact_prefix="$findings/")
 # The tape is text with parity in bit 7: a dictionary of its words as frames.
 if [[ $target == tape_lockstep ]]; then

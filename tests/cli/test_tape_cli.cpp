@@ -201,6 +201,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"huge.json", "{\"start\": [0, 0],\n \"segments\": [\n  {\"type\": \"line\", \"to\": [1e30, 0]}]}\n",
                 "3: coordinate out of range"},
         BadCase{"far.nc", "G21 G90\nG1 X0 Y0 F100\nG1 X1000000000 Y0\n", "3: coordinate out of range"},
+        // A centre 5.6e15 mm away: a double holds such a circle's points to about 1 mm.
+        BadCase{"farcentre.nc", "G21 G90\nG1 X45 Y70 F100\nG2 X25 Y70 I-10 J5555555555555550\n",
+                "3: arc centre out of range"},
         BadCase{"tiny.json", "{\"start\": [0, 0],\n \"segments\": [\n  {\"type\": \"line\", \"to\": [0.0002, 0]}]}\n",
                 "0: no cutting move of 1 BLU or more"},
         BadCase{"c2um.nc", "G21 G90\nG0 X0.002 Y0\nG3 X0.002 Y0 I-0.002 J0 F100\nM2\n",

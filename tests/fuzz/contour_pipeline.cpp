@@ -108,12 +108,12 @@ void check_first_stage(const Contour& contour, const uint8_t* data, size_t size)
     fail("tape deviates " + std::to_string(dev.max_mm) + " mm from the contour (" + opts + ")");
 }
 
-int fuzz_reader(const uint8_t* data, size_t size, const char* file, ContourParser parse) {
+int fuzz_reader(const uint8_t* data, size_t size, const char* file, InputKind kind) {
   if (size > 16384) return -1;
   const std::string text(reinterpret_cast<const char*>(data), size);
   Contour contour;
   try {
-    contour = parse(text, file);
+    contour = parse_contour(kind, text, file, InputOptions{});
   } catch (const InputError& e) {
     if (e.file() != file || e.line() < 0) fail(std::string("bad input error: ") + e.what());
     return 0;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "geometry/contour.h"
+#include "inputs/contour_inputs.h"
 
 namespace ncinterp::fuzz {
 
@@ -23,10 +24,10 @@ constexpr double kMaxChords = 5000.0;
 // crash-worthy outcome (tape off tol, read-back differs, an unexpected exception type).
 void check_first_stage(const firststage::Contour& contour, const uint8_t* data, size_t size);
 
-// One reader fuzz input: the text goes to `parse` as file `file`; a refusal must be an
-// InputError naming that file and a line >= 0, an accepted contour goes to
-// check_first_stage. Returns what LLVMFuzzerTestOneInput returns (-1: input too long).
-using ContourParser = firststage::Contour (*)(const std::string& text, const std::string& file);
-int fuzz_reader(const uint8_t* data, size_t size, const char* file, ContourParser parse);
+// One reader fuzz input: the text is parsed as `ncinterp tape` parses a file of this kind
+// (firststage::parse_contour, range checks included, default options) named `file`; a
+// refusal must be an InputError naming that file and a line >= 0, an accepted contour goes
+// to check_first_stage. Returns what LLVMFuzzerTestOneInput returns (-1: input too long).
+int fuzz_reader(const uint8_t* data, size_t size, const char* file, firststage::InputKind kind);
 
 }  // namespace ncinterp::fuzz

@@ -2,15 +2,8 @@
 // sw/host/firststage/inputs/airfoil.cpp) at a 100 mm chord; a refusal must be a one-line
 // InputError, an accepted contour (a parametric spline) must go through the whole first
 // stage (contour_pipeline.h).
-#include <string>
-
 #include "contour_pipeline.h"
-#include "fuzz_check.h"
-#include "inputs/contour_inputs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  return ncinterp::fuzz::fuzz_reader(
-      data, size, "fuzz.dat", [](const std::string& text, const std::string& file) {
-        return ncinterp::firststage::parse_airfoil(text, file, 100.0);
-      });
+  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.dat", ncinterp::firststage::InputKind::kAirfoil);
 }

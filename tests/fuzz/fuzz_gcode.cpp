@@ -2,16 +2,7 @@
 // inputs/gcode.cpp); a refusal must be a one-line InputError "FILE:LINE: what", an accepted
 // contour must go through the whole first stage (contour_pipeline.h).
 #include "contour_pipeline.h"
-#include "fuzz_check.h"
-#include "inputs/contour_inputs.h"
-
-namespace {
-// The reader with its default cut depth (the lowest Z of the file is the cut).
-ncinterp::firststage::Contour parse(const std::string& text, const std::string& file) {
-  return ncinterp::firststage::parse_gcode(text, file);
-}
-}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.nc", parse);
+  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.nc", ncinterp::firststage::InputKind::kGcode);
 }

@@ -3,10 +3,7 @@
 // InputError "FILE:LINE: what", an accepted contour must go through the whole first stage
 // (contour_pipeline.h).
 #include "contour_pipeline.h"
-#include "fuzz_check.h"
-#include "inputs/contour_inputs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.json",
-                                     ncinterp::firststage::parse_json_contour);
+  return ncinterp::fuzz::fuzz_reader(data, size, "fuzz.json", ncinterp::firststage::InputKind::kJson);
 }

@@ -33,5 +33,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       {"segments", {{{"type", "table"}, {"x0", numbers[0]}, {"h", numbers[1]}, {"y", y}}}}};
   const std::string text = doc.dump(2);  // NaN and infinity become null: the reader refuses
   return ncinterp::fuzz::fuzz_reader(reinterpret_cast<const uint8_t*>(text.data()), text.size(),
-                                     "fuzz.json", ncinterp::firststage::parse_json_contour);
+                                     "fuzz.json", ncinterp::firststage::InputKind::kJson);
 }

@@ -24,6 +24,10 @@ InputKind input_kind_of(const std::string& path);
 const char* input_kind_name(InputKind kind);
 // Reads and parses `path` by its extension.
 Contour read_contour(const std::string& path, const InputOptions& options);
+// Parses a contour's text as read_contour() does, the range checks included (`file` names
+// it in errors): what `ncinterp tape` accepts from a file, accepted from memory (fuzzers).
+Contour parse_contour(InputKind kind, const std::string& text, const std::string& file,
+                      const InputOptions& options);
 
 Contour parse_json_contour(const std::string& text, const std::string& file);
 Contour parse_gcode(const std::string& text, const std::string& file,

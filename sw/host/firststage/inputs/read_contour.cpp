@@ -36,18 +36,21 @@ namespace {
 
 // No machine has a table of a kilometre: a larger coordinate is a typo or garbage, refused
 // where it is read (the first stage then checks the interpolator's own position range).
+// An arc's centre too: a centre 1e15 mm away makes a "circle" whose points a double holds
+// only to about a millimetre (found by the gcode fuzzer: a tape 0.57 mm off at tol 0.5).
 constexpr double kMaxCoordinateMm = 1e6;
 
 Contour checked(Contour c) {
-  const auto check = [&c](Vec2 p, int line) {
+  const auto check = [&c](Vec2 p, int line, const char* what) {
     if (!(std::fabs(p.x) <= kMaxCoordinateMm && std::fabs(p.y) <= kMaxCoordinateMm))
       throw InputError(c.file, line,
-                       "coordinate out of range: (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
-                           ") mm, the limit is +-1e6 mm");
+                       std::string(what) + " out of range: (" + std::to_string(p.x) + ", " +
+                           std::to_string(p.y) + ") mm, the limit is +-1e6 mm");
   };
   for (const Segment& s : c.segments) {
-    check(s.start(), s.source_line);
-    check(s.end(), s.source_line);
+    check(s.start(), s.source_line, "coordinate");
+    check(s.end(), s.source_line, "coordinate");
+    if (s.is_arc()) check(s.centre(), s.source_line, "arc centre");
   }
   return c;
 }
@@ -62,12 +65,17 @@ Contour read_contour(const std::string& path, const InputOptions& options) {
   if (!in) throw InputError(path, 0, "cannot open the file");
   std::ostringstream text;
   text << in.rdbuf();
+  return parse_contour(kind, text.str(), path, options);
+}
+
+Contour parse_contour(InputKind kind, const std::string& text, const std::string& file,
+                      const InputOptions& options) {
   switch (kind) {
-    case InputKind::kJson: return checked(parse_json_contour(text.str(), path));
-    case InputKind::kGcode: return checked(parse_gcode(text.str(), path, options.cut_z_mm));
-    case InputKind::kAirfoil: return checked(parse_airfoil(text.str(), path, options.airfoil_chord_mm));
+    case InputKind::kJson: return checked(parse_json_contour(text, file));
+    case InputKind::kGcode: return checked(parse_gcode(text, file, options.cut_z_mm));
+    case InputKind::kAirfoil: return checked(parse_airfoil(text, file, options.airfoil_chord_mm));
   }
-  throw InputError(path, 0, "unknown input kind");
+  throw InputError(file, 0, "unknown input kind");
 }
 
 }  // namespace ncinterp::firststage
