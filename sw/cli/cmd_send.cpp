@@ -110,9 +110,9 @@ int run(const SendArgs& a) {
       if (w > 0) {
         sent += static_cast<size_t>(w);
         last_moved = std::chrono::steady_clock::now();
-      }
-      else if (w < 0 && errno != EAGAIN && errno != EINTR)
+      } else if (w < 0 && errno != EAGAIN && errno != EINTR) {
         throw std::runtime_error(a.port + ": write: " + std::strerror(errno));
+      }
     }
     if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
       uint8_t buf[256];
