@@ -87,59 +87,61 @@ module tape_word_parser #(
   logic [WideWidth-1:0] limit, num_next;  // limit: the word's 2^w - 1 (127 for G and M)
   word_e                letter_word;      // the word an address letter starts
 
-  // The character's class and the word's properties.
+  // The character's class, the word's properties, the checks and the next word, in one
+  // block. Clocks without a body character (most clocks: the reader is slow) evaluate
+  // nothing here: the registers keep their values (the always_ff's enable) and the outputs
+  // are not used (tape_decoder.sv reads them only with char_valid_i), so both are don't-care
+  // ('x), which the verilated model skips (no 36-bit x10 per clock) and synthesis folds away.
   always_comb begin
-    is_blank  = char_i == interp_pkg::ChSpace || char_i == interp_pkg::ChCr;
-    is_digit  = char_i >= interp_pkg::ChZero && char_i <= interp_pkg::ChNine;
-    is_sign   = char_i == interp_pkg::ChPlus || char_i == interp_pkg::ChMinus;
-    is_dot    = char_i == interp_pkg::ChDot;
-    is_letter = 1'b1;
-    unique case (char_i)
-      interp_pkg::ChN: letter_word = WordN;
-      interp_pkg::ChG: letter_word = WordG;
-      interp_pkg::ChM: letter_word = WordM;
-      interp_pkg::ChX: letter_word = WordX;
-      interp_pkg::ChY: letter_word = WordY;
-      interp_pkg::ChI: letter_word = WordI;
-      interp_pkg::ChJ: letter_word = WordJ;
-      interp_pkg::ChF: letter_word = WordF;
-      default: begin
-        letter_word = WordNone;
-        is_letter   = 1'b0;
-      end
-    endcase
-    signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
-    fractional_word = signed_word || word_q == WordF;
-    frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
-    unique case (word_q)
-      WordN:        limit = SeqLimit;
-      WordG, WordM: limit = CodeMask;
-      WordF:        limit = FeedLimit;
-      default:      limit = IncLimit;
-    endcase
-    word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
-                                    : (num_state_q == NumInt);
-    num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(char_i[3:0]);  // *10 + d
-  end
-
-  assign delimiter_o = !(is_blank || is_digit || is_sign || is_dot);
-
-  // The checks, and the next word. Clocks without a body character (most clocks: the reader
-  // is slow) evaluate nothing: the registers keep their values (the always_ff's enable), so
-  // the next-state values are don't-care ('x), which the verilated model skips and synthesis
-  // folds away.
-  always_comb begin
-    {word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d} = 'x;
-    err_o        = 1'b0;
-    err_code_o   = interp_pkg::ErrMalformedNumber;
-    err_offset_o = offset_i;
+    {word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d, is_blank, is_digit,
+     is_sign, is_dot, is_letter, letter_word, signed_word, fractional_word, frac_limit, limit,
+     word_complete, num_next, err_o, err_code_o, err_offset_o, delimiter_o, word_end_o,
+     word_start_o} = 'x;
     if (char_valid_i) begin
+      is_blank  = char_i == interp_pkg::ChSpace || char_i == interp_pkg::ChCr;
+      is_digit  = char_i >= interp_pkg::ChZero && char_i <= interp_pkg::ChNine;
+      is_sign   = char_i == interp_pkg::ChPlus || char_i == interp_pkg::ChMinus;
+      is_dot    = char_i == interp_pkg::ChDot;
+      is_letter = 1'b1;
+      unique case (char_i)
+        interp_pkg::ChN: letter_word = WordN;
+        interp_pkg::ChG: letter_word = WordG;
+        interp_pkg::ChM: letter_word = WordM;
+        interp_pkg::ChX: letter_word = WordX;
+        interp_pkg::ChY: letter_word = WordY;
+        interp_pkg::ChI: letter_word = WordI;
+        interp_pkg::ChJ: letter_word = WordJ;
+        interp_pkg::ChF: letter_word = WordF;
+        default: begin
+          letter_word = WordNone;
+          is_letter   = 1'b0;
+        end
+      endcase
+      signed_word     = word_q == WordX || word_q == WordY || word_q == WordI || word_q == WordJ;
+      fractional_word = signed_word || word_q == WordF;
+      frac_limit      = word_q == WordF ? FeedFracCount : FracCount;
+      unique case (word_q)
+        WordN:        limit = SeqLimit;
+        WordG, WordM: limit = CodeMask;
+        WordF:        limit = FeedLimit;
+        default:      limit = IncLimit;
+      endcase
+      word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
+                                      : (num_state_q == NumInt);
+      num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(char_i[3:0]);  // *10 + d
+      delimiter_o  = !(is_blank || is_digit || is_sign || is_dot);
+      word_end_o   = delimiter_o && word_q != WordNone && word_complete;
+      word_start_o = delimiter_o && is_letter;
+
       word_d        = word_q;
       num_state_d   = num_state_q;
       num_d         = num_q;
       neg_d         = neg_q;
       frac_count_d  = frac_count_q;
       word_offset_d = word_offset_q;
+      err_o         = 1'b0;
+      err_code_o    = interp_pkg::ErrMalformedNumber;
+      err_offset_o  = offset_i;
       if (is_digit) begin
         if (word_q == WordNone || (num_state_q == NumFrac && frac_count_q == frac_limit)) begin
           err_o = 1'b1;  // a digit outside a word, or one fraction digit too many
@@ -213,10 +215,8 @@ module tape_word_parser #(
     endcase
   end
 
-  assign word_end_o    = delimiter_o && word_q != WordNone && word_complete;
   assign word_value_o  = num_q;
   assign word_neg_o    = neg_q;
   assign word_offset_o = word_offset_q;
-  assign word_start_o  = delimiter_o && is_letter;
 
 endmodule
