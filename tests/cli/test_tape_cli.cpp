@@ -198,6 +198,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"arcr.nc", "G1 X0 Y0\nG2 X10 Y0 R2\n", "2: arc radius R2 is shorter"},
         BadCase{"num.dat", "AIRFOIL\n1.0 0.0\n0.5 0.05\n0.0 0.0\n0.5 abc\n1.0 0.0\n", "5: 'abc' is not a number"},
         BadCase{"lednicer.dat", "AIRFOIL\n3. 3.\n\n0 0\n0.5 0.05\n1 0\n\n0 0\n0.5 -0.05\n", "9: Lednicer header announces 3 + 3 points"},
+        // A count beyond any integer (the airfoil fuzzer; UBSan before the fix).
+        BadCase{"count.dat", "AIRFOIL\n1e38 3.\n0 0\n0.5 0.05\n1 0\n", "5: Lednicer header announces 1e+38 + 3 points"},
         BadCase{"huge.json", "{\"start\": [0, 0],\n \"segments\": [\n  {\"type\": \"line\", \"to\": [1e30, 0]}]}\n",
                 "3: coordinate out of range"},
         BadCase{"far.nc", "G21 G90\nG1 X0 Y0 F100\nG1 X1000000000 Y0\n", "3: coordinate out of range"},

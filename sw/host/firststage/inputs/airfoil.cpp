@@ -68,12 +68,15 @@ Contour parse_airfoil(const std::string& text, const std::string& file, double c
     const double nu = data[0].values[0], nl = data[0].values[1];
     if (nu != std::floor(nu) || nl != std::floor(nl))
       throw InputError(file, data[0].line, "Lednicer point counts must be whole numbers");
-    const size_t upper = static_cast<size_t>(nu), lower = static_cast<size_t>(nl);
-    if (data.size() - 1 != upper + lower)
-      throw InputError(file, data.back().line,
-                       "Lednicer header announces " + std::to_string(upper) + " + " +
-                           std::to_string(lower) + " points, the file has " +
-                           std::to_string(data.size() - 1));
+    // Compared as doubles first: a count like 1e38 has no size_t (found by the airfoil
+    // fuzzer: UBSan, a float-to-integer conversion out of range).
+    if (static_cast<double>(data.size() - 1) != nu + nl) {
+      std::ostringstream what;
+      what << "Lednicer header announces " << nu << " + " << nl << " points, the file has "
+           << data.size() - 1;
+      throw InputError(file, data.back().line, what.str());
+    }
+    const size_t upper = static_cast<size_t>(nu);
     for (size_t i = upper; i >= 1; --i) {  // upper surface, trailing edge first
       pts.push_back({data[i].values[0], data[i].values[1]});
       lines.push_back(data[i].line);
