@@ -135,6 +135,7 @@ module tape_decoder #(
   logic [3:0]             fail_code;
   logic [OffsetWidth-1:0] fail_offset;
   logic                   word_ok;      // the word ended by this frame was committed
+  logic                   clear_block;  // the block's per-block registers clear at this edge
   // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
   // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
   logic                   in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
@@ -186,7 +187,7 @@ module tape_decoder #(
     // away (no gate per next-state bit).
     {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
-     grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok} = 'x;
+     grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, clear_block} = 'x;
     if (update) begin
       state_d       = state_q;
       n_d           = n_q;
@@ -210,6 +211,7 @@ module tape_decoder #(
       fail_code     = interp_pkg::ErrParity;
       fail_offset   = offset;
       word_ok       = 1'b1;
+      clear_block   = 1'b0;
 
       if (take) begin
         if (parity_err) begin
@@ -302,9 +304,7 @@ module tape_decoder #(
                       end
                     end else begin
                       if (end_blk_d) state_d = StEnd;
-                      n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
-                      dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
-                      dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
+                      clear_block = 1'b1;
                     end
                   end else if (ch == interp_pkg::ChOpen) begin
                     state_d = StComment;
@@ -339,13 +339,18 @@ module tape_decoder #(
         if (blk_ready_i) begin
           if (end_blk_q) state_d = StEnd;
           else state_d = StBody;
-          n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
-          dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
-          dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
+          clear_block = 1'b1;
         end
       end else if (tape_cut) begin
         fail = 1'b1;
         fail_code = interp_pkg::ErrTruncatedTape;  // at the offset of the frame that never came
+      end
+
+      // A block ends (an LF without motion, or the handoff): its per-block registers clear.
+      if (clear_block) begin
+        n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
+        dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
+        dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
       end
 
       if (fail) begin
