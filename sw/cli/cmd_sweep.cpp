@@ -221,7 +221,7 @@ void report(const SweepArgs& a, const Plan& plan, const std::vector<PointResult>
   const Table table = grid_table(results, plan.axes);
   const ParetoFront front = pareto_front(results);
   const Table front_t = front_table(table, front, plan.axes);
-  const Table recs = recommendation_table(results, recommend(results, front));
+  const Table recs = recommendation_table(results, recommend(results, front, MeasureSetup{}.clock_hz));
   std::vector<std::string> input_columns = with_axes(plan.axes, {});
   for (const std::string& h : table.header)
     if (h.rfind("blocks ", 0) == 0) input_columns.push_back(h);

@@ -30,10 +30,14 @@ bool dominates(const std::vector<double>& a, const std::vector<double>& b) {
   return better;
 }
 
-bool fits(const PointResult& r, const Board& b) {
+// The board holds the point's logic and runs at its clock: the placement judged (the
+// HX1K's own, else the HX8K's) has the cells and an Fmax of at least the point's clock.
+bool fits(const PointResult& r, const Board& b, double default_clock_hz) {
   const SynthResult& s = r.row.synth;
-  if (b.small_part) return s.small_logic_cells.ok() && s.small_fmax_mhz.ok() && *s.small_logic_cells.value <= b.logic_cells;
-  return s.ice40_logic_cells.ok() && s.fmax_mhz.ok() && *s.ice40_logic_cells.value <= b.logic_cells;
+  const Measured& cells = b.small_part ? s.small_logic_cells : s.ice40_logic_cells;
+  const Measured& fmax = b.small_part ? s.small_fmax_mhz : s.fmax_mhz;
+  const double clock_mhz = point_value(r.point, kClock, default_clock_hz) / 1e6;
+  return cells.ok() && fmax.ok() && *cells.value <= b.logic_cells && *fmax.value >= clock_mhz;
 }
 
 }  // namespace
@@ -72,7 +76,8 @@ const std::vector<Board>& target_boards() {
   return boards;
 }
 
-std::vector<Recommendation> recommend(const std::vector<PointResult>& results, const ParetoFront& front) {
+std::vector<Recommendation> recommend(const std::vector<PointResult>& results, const ParetoFront& front,
+                                      double default_clock_hz) {
   std::vector<Recommendation> out;
   const bool has_area = !front.objectives.empty() && front.objectives.front() == "ice40_logic_cells";
   for (const Board& b : target_boards()) {
@@ -90,12 +95,13 @@ std::vector<Recommendation> recommend(const std::vector<PointResult>& results, c
       return i < j;
     };
     for (size_t i : front.members)
-      if (fits(results[i], b) && (!rec.point || better(i, *rec.point))) rec.point = i;
+      if (fits(results[i], b, default_clock_hz) && (!rec.point || better(i, *rec.point))) rec.point = i;
     if (rec.point) {
       rec.why = "smallest total error of the front's points that fit";
     } else {
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "no point of the front fits (%.0f logic cells)", b.logic_cells);
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "no point of the front fits (%.0f logic cells, Fmax at least its clock)",
+                    b.logic_cells);
       rec.why = buf;
     }
     out.push_back(rec);

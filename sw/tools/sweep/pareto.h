@@ -6,7 +6,9 @@
 // area (a --no-synth run), the front is over error and tape length alone and says so. The
 // rule for a board: among the front's points that fit it, the smallest total error, then
 // the shortest tape, then the smallest area, then the first in grid order; so the choice
-// is reproducible and never made by hand.
+// is reproducible and never made by hand. A point fits a board when the placement judged
+// holds it and its Fmax reaches the point's clock (clock_hz: a design point at 48 MHz is
+// no pick for a part that places it at 32 MHz).
 #pragma once
 #include <optional>
 #include <string>
@@ -29,8 +31,9 @@ struct Board {
   double logic_cells = 0;       // capacity
   bool small_part = false;      // fit judged by the HX1K placement (else by the HX8K's count)
 };
-// HX1K (1280, placed on the HX1K TQ144), UP5K (5280, judged by the HX8K placement's count),
-// HX8K (7680, placed on the HX8K CT256).
+// HX1K (1280, placed on the HX1K TQ144), UP5K (5280, judged by the HX8K placement: its
+// count, and its Fmax, which is optimistic for the UP5K's slower fabric), HX8K (7680,
+// placed on the HX8K CT256).
 const std::vector<Board>& target_boards();
 
 struct Recommendation {
@@ -39,6 +42,8 @@ struct Recommendation {
   std::string why;              // the rule's outcome, or why there is no point
 };
 
-std::vector<Recommendation> recommend(const std::vector<PointResult>& results, const ParetoFront& front);
+// default_clock_hz: the clock of a point that does not set clock_hz.
+std::vector<Recommendation> recommend(const std::vector<PointResult>& results, const ParetoFront& front,
+                                      double default_clock_hz);
 
 }  // namespace ncinterp::sweep

@@ -1,6 +1,7 @@
 // The Pareto front and the board recommendations on made-up results: domination over
 // area, error and tape length; points that failed or lack a value stay out; each board's
-// pick is the front's smallest error that fits, by the board's own placement.
+// pick is the front's smallest error that fits, by the board's own placement, and whose
+// clock the placement's Fmax reaches.
 #include <gtest/gtest.h>
 
 #include "pareto.h"
@@ -43,7 +44,7 @@ TEST(Pareto, WithoutAreaTheFrontIsOverErrorAndTape) {
   const ParetoFront f = pareto_front(rs);
   EXPECT_EQ(f.objectives, (std::vector<std::string>{"total_error_max_mm", "tape_frames"}));
   EXPECT_EQ(f.members, (std::vector<size_t>{1}));
-  for (const Recommendation& r : recommend(rs, f)) {
+  for (const Recommendation& r : recommend(rs, f, 1e6)) {
     EXPECT_FALSE(r.point);
     EXPECT_EQ(r.why, "no area measured (synthesis not run)");
   }
@@ -56,7 +57,7 @@ TEST(Pareto, EachBoardGetsTheSmallestErrorThatFitsIt) {
                                        point(9000, 0.001, 1000)};  // fits no board
   const ParetoFront f = pareto_front(rs);
   EXPECT_EQ(f.members.size(), 4u);
-  const std::vector<Recommendation> recs = recommend(rs, f);
+  const std::vector<Recommendation> recs = recommend(rs, f, 1e6);
   ASSERT_EQ(recs.size(), 3u);
   EXPECT_EQ(recs[0].board.name, "HX1K");
   EXPECT_EQ(recs[0].point, std::optional<size_t>(0));
@@ -67,10 +68,24 @@ TEST(Pareto, EachBoardGetsTheSmallestErrorThatFitsIt) {
 
   // The HX1K is judged by its own placement: a point the HX1K cannot hold is not its pick.
   const std::vector<PointResult> big = {point(1200, 0.009, 9000, 1400)};
-  const std::vector<Recommendation> r2 = recommend(big, pareto_front(big));
+  const std::vector<Recommendation> r2 = recommend(big, pareto_front(big), 1e6);
   EXPECT_FALSE(r2[0].point);
-  EXPECT_EQ(r2[0].why, "no point of the front fits (1280 logic cells)");
+  EXPECT_EQ(r2[0].why, "no point of the front fits (1280 logic cells, Fmax at least its clock)");
   EXPECT_EQ(r2[1].point, std::optional<size_t>(0));
+}
+
+// A board must also run the point at its clock: the placement's Fmax (30 MHz here) at
+// least the point's clock_hz, else the next point of the front that does.
+TEST(Pareto, ABoardIsNoPickForAPointWhoseClockItCannotReach) {
+  std::vector<PointResult> rs = {point(1000, 0.009, 9000), point(1100, 0.002, 9000)};
+  rs[0].point[kClock] = 12e6;
+  rs[1].point[kClock] = 48e6;  // the smaller error, but above the 30 MHz Fmax
+  const ParetoFront f = pareto_front(rs);
+  ASSERT_EQ(f.members.size(), 2u);
+  for (const Recommendation& r : recommend(rs, f, 1e6)) EXPECT_EQ(r.point, std::optional<size_t>(0)) << r.board.name;
+  rs[1].point.erase(kClock);  // the default clock, 1 MHz here, and 40 MHz: the pick again / none
+  EXPECT_EQ(recommend(rs, pareto_front(rs), 1e6)[0].point, std::optional<size_t>(1));
+  EXPECT_EQ(recommend(rs, pareto_front(rs), 40e6)[0].point, std::optional<size_t>(0));
 }
 
 }  // namespace
