@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "file_lock.h"
 #include "subprocess.h"
 #include "synth_cache.h"
 #include "synth_logs.h"
@@ -116,6 +117,12 @@ std::string synthesis_key(const SynthesisSetup& s) {
 SynthResult synthesize(const RtlParameters& w, const SynthesisSetup& s, const std::string& key) {
   const SynthCache cache(s.cache_dir, key);
   const std::string tag = parameter_tag(w);
+  if (std::optional<SynthResult> hit = cache.load(tag)) return *hit;
+
+  // One synthesis of a parameter set at a time (points sharing it may run at once): a
+  // second one waits here and then takes the first's result from the cache.
+  std::filesystem::create_directories(s.work_dir);
+  const FileLock lock(s.work_dir + "/" + tag + ".lock");
   if (std::optional<SynthResult> hit = cache.load(tag)) return *hit;
 
   SynthResult r;

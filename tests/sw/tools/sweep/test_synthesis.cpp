@@ -1,10 +1,12 @@
 // The synthesis flow (yosys generic, synth_ice40, nextpnr-ice40 on the HX8K) on a tiny
 // stand-in design, so the real tools run in seconds; failures and missing tools keep their
-// reason in every column they leave empty; the cache returns what was measured.
+// reason in every column they leave empty; the cache returns what was measured, and a
+// parameter set is synthesised once even when two points ask for it at once.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "scratch_dir_test.h"
 #include "sweep_test_support.h"
@@ -57,6 +59,20 @@ TEST_F(Synthesis, MeasuresTheStandInDesignAndCachesTheResult) {
   EXPECT_EQ(*again.cells.value, *wide.cells.value);
   EXPECT_EQ(*again.fmax_mhz.value, *wide.fmax_mhz.value);
   EXPECT_EQ(*again.small_logic_cells.value, *wide.small_logic_cells.value);
+}
+
+// Two points that share a parameter set, run at the same time (threads here; processes
+// under GNU parallel): one synthesises, the other waits for it and takes the cached result.
+TEST_F(Synthesis, PointsSharingASynthesisRunItOnce) {
+  const SynthesisSetup s = tiny_setup(dir_.string());
+  const std::string key = synthesis_key(s);
+  SynthResult a, b;
+  std::thread other([&] { a = synthesize(6, s, key); });
+  b = synthesize(6, s, key);
+  other.join();
+  ASSERT_TRUE(a.fmax_mhz.ok() && b.fmax_mhz.ok()) << a.fmax_mhz.reason << b.fmax_mhz.reason;
+  EXPECT_NE(a.from_cache, b.from_cache);  // exactly one synthesised
+  EXPECT_EQ(*a.ice40_logic_cells.value, *b.ice40_logic_cells.value);
 }
 
 TEST_F(Synthesis, AFailingSynthesisKeepsItsReasonInItsRow) {
