@@ -19,7 +19,9 @@ module tape_decoder_props #(
   parameter int W  = 2,
   parameter int FW = 2,
   parameter int NW = 2,
-  parameter int OW = 5
+  parameter int OW = 5,
+  // 1: frames of the tape alphabet only (tape_alphabet.sv; the CI variant), 0: any byte.
+  parameter bit Alphabet = 1'b0
 ) (
   input logic       clk_i,
   input logic       rst_ni,
@@ -71,10 +73,14 @@ module tape_decoder_props #(
     else if (f_low_q != '1) f_low_q <= f_low_q + 1'b1;
   end
 
+  logic f_frame_allowed;
+  tape_alphabet #(.Restrict(Alphabet)) u_alphabet (.frame_i, .allowed_o(f_frame_allowed));
+
   always_comb begin
     assume (rst_ni == !f_init);
     if (f_tape_end_q) assume (tape_end_i);
     if (tape_end_i) assume (!frame_valid_i);
+    if (frame_valid_i) assume (f_frame_allowed);
   end
 
   always_comb begin
