@@ -1,10 +1,15 @@
 // Pareto front and board recommendations (see pareto.h).
 #include "pareto.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace ncinterp::sweep {
 namespace {
+
+// Total errors closer than this are a tie for the recommendation: a tenth of a micrometre,
+// below what a tape of the finest BLU (0.001 mm) can express.
+constexpr double kErrorTieMm = 1e-4;
 
 bool passed(const PointResult& r) {
   if (!r.row.missing_input().empty()) return false;
@@ -90,14 +95,19 @@ std::vector<Recommendation> recommend(const std::vector<PointResult>& results, c
     auto better = [&](size_t i, size_t j) {  // i before j by the rule
       for (const char* o : {"total_error_max_mm", "tape_frames", "ice40_logic_cells"}) {
         const double a = *objective(results[i], o), c = *objective(results[j], o);
-        if (a != c) return a < c;
+        const double tie = std::string(o) == "total_error_max_mm" ? kErrorTieMm : 0.0;
+        if (std::abs(a - c) > tie) return a < c;
       }
+      // Then what the clock buys: the block times closest to 1/F.
+      const double fi = std::abs(results[i].row.worst(&InputResult::feed_error_worst).value_or(1e300));
+      const double fj = std::abs(results[j].row.worst(&InputResult::feed_error_worst).value_or(1e300));
+      if (fi != fj) return fi < fj;
       return i < j;
     };
     for (size_t i : front.members)
       if (fits(results[i], b, default_clock_hz) && (!rec.point || better(i, *rec.point))) rec.point = i;
     if (rec.point) {
-      rec.why = "smallest total error of the front's points that fit";
+      rec.why = "first by the rule (total error, tape, area, feed error) of the front's points that fit";
     } else {
       char buf[128];
       std::snprintf(buf, sizeof buf, "no point of the front fits (%.0f logic cells, Fmax at least its clock)",

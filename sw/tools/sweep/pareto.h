@@ -4,9 +4,10 @@
 // Idea: only points that passed every check on every input and whose objectives were all
 // measured take part (a gap is never filled with an estimate). When no such point has an
 // area (a --no-synth run), the front is over error and tape length alone and says so. The
-// rule for a board: among the front's points that fit it, the smallest total error, then
-// the shortest tape, then the smallest area, then the first in grid order; so the choice
-// is reproducible and never made by hand. A point fits a board when the placement judged
+// rule for a board: among the front's points that fit it, the smallest total error (closer
+// than 0.1 um is a tie), then the shortest tape, then the smallest area, then the smallest
+// feed error (what a faster clock buys), then the first in grid order; so the choice is
+// reproducible and never made by hand. A point fits a board when the placement judged
 // holds it and its Fmax reaches the point's clock (clock_hz: a design point at 48 MHz is
 // no pick for a part that places it at 32 MHz).
 #pragma once

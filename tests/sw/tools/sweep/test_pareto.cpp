@@ -88,5 +88,20 @@ TEST(Pareto, ABoardIsNoPickForAPointWhoseClockItCannotReach) {
   EXPECT_EQ(recommend(rs, pareto_front(rs), 40e6)[0].point, std::optional<size_t>(0));
 }
 
+// Total errors closer than 0.1 um are a tie (no tape can express the difference): the
+// shorter tape wins; a tie left after tape and area goes to the smaller feed error (what
+// a faster clock buys), not to grid order.
+TEST(Pareto, ErrorsBelowATenthOfAMicrometreTieAndTheFeedErrorBreaksWhatIsLeft) {
+  const std::vector<PointResult> rs = {point(1000, 0.010000, 9000), point(2000, 0.010050, 5000)};
+  const ParetoFront f = pareto_front(rs);
+  ASSERT_EQ(f.members.size(), 2u);
+  EXPECT_EQ(recommend(rs, f, 1e6)[2].point, std::optional<size_t>(1));  // HX8K: the shorter tape
+
+  std::vector<PointResult> clocks = {point(1000, 0.01, 9000), point(1000, 0.01, 9000)};
+  clocks[0].row.inputs[0].feed_error_worst = -1e-4;
+  clocks[1].row.inputs[0].feed_error_worst = 1e-6;
+  EXPECT_EQ(recommend(clocks, pareto_front(clocks), 1e6)[2].point, std::optional<size_t>(1));
+}
+
 }  // namespace
 }  // namespace ncinterp::sweep
