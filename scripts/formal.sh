@@ -104,8 +104,7 @@ build_smt2() {
   # The package of shared constants comes first when it exists (modules may import it).
   [ -f "$rtl_dir/interp_pkg.sv" ] && files+=("$rtl_dir/interp_pkg.sv")
   for m in ${p_rtl[$name]}; do files+=("$rtl_dir/$m.sv"); done
-  # The harness, and the frame alphabet the tape harnesses share (unused ones drop out).
-  files+=("$formal_dir/tape_alphabet.sv" "$formal_dir/$harness.sv")
+  files+=("$formal_dir/$harness.sv")
   script="read_verilog -formal -sv $defines ${files[*]}"$'\n'
   if [ "${p_params[$name]}" != "-" ]; then
     local kv

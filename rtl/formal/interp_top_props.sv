@@ -25,9 +25,7 @@ module interp_top_props #(
   parameter int MW = 3,   // ModulusWidth
   parameter int PW = 4,   // PosWidth
   parameter int NW = 2,   // SeqWidth
-  parameter int OW = 5,   // OffsetWidth
-  // 1: frames of the tape alphabet only (tape_alphabet.sv; the CI variant), 0: any byte.
-  parameter bit Alphabet = 1'b0
+  parameter int OW = 5    // OffsetWidth
 ) (
   input logic          clk_i,
   input logic          rst_ni,
@@ -109,15 +107,11 @@ module interp_top_props #(
     end
   end
 
-  logic f_frame_allowed;
-  tape_alphabet #(.Restrict(Alphabet)) u_alphabet (.frame_i, .allowed_o(f_frame_allowed));
-
   always_comb begin
     assume (rst_ni == !f_init);
     if (!f_init) assume (feed_modulus_i == f_modulus_q && feed_modulus_i != '0);
     if (f_tape_end_q) assume (tape_end_i);
     if (tape_end_i) assume (!frame_valid_i);
-    if (frame_valid_i) assume (f_frame_allowed);
   end
 
   always_comb begin

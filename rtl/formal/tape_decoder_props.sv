@@ -11,17 +11,16 @@
 //   held block, waiting for frames, or an error, and nothing else stalls the reader.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
-// preparation's internals (which the area redesign changes). The depth (24 clocks) covers
-// reading a short program and K clocks beyond (e.g. the end of a program); an arc block
-// needs about 15 clocks to be read, so its preparation is covered only partly (the cover
-// shows it starts); --deep goes to 40.
+// preparation's internals (which the area redesign changes). The CI depth (16 clocks)
+// covers reading a line block and holding it (ap_held_stable); ap_ready_bounded needs more
+// than K clocks of stall, so it is checked by --deep (24 clocks: a short program and K
+// clocks beyond; an arc block needs about 15 clocks to be read, so its preparation is
+// covered only partly, the cover shows it starts).
 module tape_decoder_props #(
   parameter int W  = 2,
   parameter int FW = 2,
   parameter int NW = 2,
-  parameter int OW = 5,
-  // 1: frames of the tape alphabet only (tape_alphabet.sv; the CI variant), 0: any byte.
-  parameter bit Alphabet = 1'b0
+  parameter int OW = 5
 ) (
   input logic       clk_i,
   input logic       rst_ni,
@@ -73,14 +72,10 @@ module tape_decoder_props #(
     else if (f_low_q != '1) f_low_q <= f_low_q + 1'b1;
   end
 
-  logic f_frame_allowed;
-  tape_alphabet #(.Restrict(Alphabet)) u_alphabet (.frame_i, .allowed_o(f_frame_allowed));
-
   always_comb begin
     assume (rst_ni == !f_init);
     if (f_tape_end_q) assume (tape_end_i);
     if (tape_end_i) assume (!frame_valid_i);
-    if (frame_valid_i) assume (f_frame_allowed);
   end
 
   always_comb begin
