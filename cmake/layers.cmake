@@ -5,24 +5,20 @@
 # checked by where it lives. Included by the root CMakeLists.txt after every folder is
 # added; tests/cmake/layer_violation is a small project that breaks the rule on purpose.
 
-# The layer of a folder: the folders show the layers, so the check needs no list of targets.
+# The layer folders, lowest first: a folder's layer is its position in this list (1 to 6).
+set(ncinterp_layer_folders "sw/host" "rtl|sc_model" "sw/tools" "sw/cli" "bench" "tests")
+
 function(ncinterp_layer_of dir out)
   file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${dir})
-  if(rel MATCHES "^sw/host(/|$)")
-    set(${out} 1 PARENT_SCOPE)
-  elseif(rel MATCHES "^(rtl|sc_model)(/|$)")
-    set(${out} 2 PARENT_SCOPE)
-  elseif(rel MATCHES "^sw/tools(/|$)")
-    set(${out} 3 PARENT_SCOPE)
-  elseif(rel MATCHES "^sw/cli(/|$)")
-    set(${out} 4 PARENT_SCOPE)
-  elseif(rel MATCHES "^bench(/|$)")
-    set(${out} 5 PARENT_SCOPE)
-  elseif(rel MATCHES "^tests(/|$)")
-    set(${out} 6 PARENT_SCOPE)
-  else()
-    message(FATAL_ERROR "${rel}: a target outside the layer folders (docs/architecture.md)")
-  endif()
+  set(layer 0)
+  foreach(folders IN LISTS ncinterp_layer_folders)
+    math(EXPR layer "${layer} + 1")
+    if(rel MATCHES "^(${folders})(/|$)")
+      set(${out} ${layer} PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+  message(FATAL_ERROR "${rel}: a target outside the layer folders (docs/architecture.md)")
 endfunction()
 
 # Every project target against every project target it links: a link to a higher layer
