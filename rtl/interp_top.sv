@@ -63,7 +63,7 @@ module interp_top #(
   // A decoded block as the buffer stores it: N, motion, dx, dy (sign + magnitude), |i|, |j|
   // (the arc's start about its centre), S, k, and for an arc the growth of |x| and |y|.
   // The codes are interp_pkg's; the struct is declared here because its widths are this
-  // module's parameters (interp_pkg.sv explains why a package cannot hold it).
+  // module's parameters (0_interp_pkg.sv explains why a package cannot hold it).
   typedef struct packed {
     logic [SeqWidth-1:0]  n;
     logic [interp_pkg::MotionWidth-1:0] motion;  // an interp_pkg::motion_e code

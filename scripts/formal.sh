@@ -102,7 +102,7 @@ build_smt2() {
   local name=$1 rtl_dir=$2 out=$3 defines=${4:-} harness=${p_harness[$1]}
   local files=() m script
   # The package of shared constants comes first when it exists (modules may import it).
-  [ -f "$rtl_dir/interp_pkg.sv" ] && files+=("$rtl_dir/interp_pkg.sv")
+  [ -f "$rtl_dir/0_interp_pkg.sv" ] && files+=("$rtl_dir/0_interp_pkg.sv")
   for m in ${p_rtl[$name]}; do files+=("$rtl_dir/$m.sv"); done
   files+=("$formal_dir/$harness.sv")
   script="read_verilog -formal -sv $defines ${files[*]}"$'\n'

@@ -4,8 +4,8 @@
 # several nextpnr seeds: logic cells and the median Fmax, with the critical path of the
 # median seed.
 # Usage: ice40_report.sh WORK_DIR PART PACKAGE "SEEDS" FILE.sv...
-#   e.g. ice40_report.sh /tmp/r hx8k ct256 "1 2 3 4 5" rtl/interp_pkg.sv rtl/*.sv \
-#        rtl/fpga/interp_ice40_top.sv     (interp_pkg.sv first: yosys reads a package first)
+#   e.g. ice40_report.sh /tmp/r hx8k ct256 "1 2 3 4 5" rtl/0_interp_pkg.sv rtl/*.sv \
+#        rtl/fpga/interp_ice40_top.sv     (0_interp_pkg.sv first: yosys reads a package first)
 # Idea: the per-module numbers come from the hierarchy before flattening, so logic whose
 # outputs the board leaves unconnected is still counted there; the placed total is the
 # flattened design, where synthesis has removed it (docs/bit-widths.md section 6).

@@ -1,10 +1,10 @@
-// interp_pkg_gen: writes rtl/interp_pkg.sv, the SystemVerilog package of the interpolator's
+// interp_pkg_gen: writes rtl/0_interp_pkg.sv, the SystemVerilog package of the interpolator's
 // contracts (motion codes, error codes, tape characters), from the tape library's X-macro
 // lists tape_motions.def, tape_errors.def and tape_chars.def.
 // Idea: the C++ side expands the same .def files at compile time, so the RTL and the C++
 // models cannot disagree on a code. The package is checked in (the RTL flows read it as a
 // plain file); `interp_pkg_gen --check FILE` tells whether FILE is what this program writes,
-// and a test runs it on rtl/interp_pkg.sv.
+// and a test runs it on rtl/0_interp_pkg.sv.
 // Usage: interp_pkg_gen OUT.sv | interp_pkg_gen --check PKG.sv
 #include <algorithm>
 #include <cstdio>
@@ -119,7 +119,13 @@ std::string package(const std::string& tape_dir) {
          "// hand. Yosys 0.23 needs two detours there: a package type becomes a struct field only\n"
          "// through a local alias (typedef interp_pkg::motion_e motion_t;), and $bits takes a signal,\n"
          "// not a type.\n"
+         "//\n"
+         "// The file is named 0_interp_pkg.sv so that it sorts first: every tool that reads\n"
+         "// rtl/*.sv in glob order (verilator --lint-only -Wall rtl/*.sv) meets the package before\n"
+         "// the modules that use it.\n"
+         "/* verilator lint_off DECLFILENAME */\n"
          "package interp_pkg;\n"
+         "/* verilator lint_on DECLFILENAME */\n"
          "\n"
          "  // Constants, not signals: kept out of Verilator's VCD (the modules' own names only).\n"
          "  /* verilator tracing_off */\n"
@@ -163,7 +169,7 @@ std::string read_file(const std::string& path) {
 int main(int argc, char** argv) {
   CLI::App app{"Writes the SystemVerilog package interp_pkg from the tape library's .def files"};
   std::string out_path, check_path;
-  auto* out_opt = app.add_option("out", out_path, "package file to write (rtl/interp_pkg.sv)");
+  auto* out_opt = app.add_option("out", out_path, "package file to write (rtl/0_interp_pkg.sv)");
   app.add_option("--check", check_path, "compare this file with the package instead of writing")
       ->excludes(out_opt);
   app.require_option(1);

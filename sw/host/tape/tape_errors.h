@@ -1,7 +1,7 @@
 // The interpolator's error codes and their messages, from the one list tape_errors.def.
 // Idea: the codes are the tape format's contract, so they live in the lowest library (the
 // tape library); the golden model, the verilated RTL's reports and the software reader all
-// use this enum, and rtl/interp_pkg.sv is generated from the same .def.
+// use this enum, and rtl/0_interp_pkg.sv is generated from the same .def.
 #pragma once
 #include <cstdint>
 

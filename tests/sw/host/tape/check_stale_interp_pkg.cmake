@@ -1,6 +1,6 @@
 # Negative control of tape.interp_pkg_up_to_date: interp_pkg_gen --check must reject a copy
-# of rtl/interp_pkg.sv with one error code changed, and say why.
-# Usage: cmake -DGEN=interp_pkg_gen -DPKG=rtl/interp_pkg.sv -DOUT=scratch.sv -P this file
+# of rtl/0_interp_pkg.sv with one error code changed, and say why.
+# Usage: cmake -DGEN=interp_pkg_gen -DPKG=rtl/0_interp_pkg.sv -DOUT=scratch.sv -P this file
 file(READ ${PKG} text)
 string(REPLACE "ErrParity               = 4'd1," "ErrParity               = 4'd2," stale "${text}")
 if(stale STREQUAL text)
