@@ -40,17 +40,19 @@ class VerilatedInterp {
     reset();
   }
 
-  // One edge with rst_ni low (synchronous reset).
-  void reset() {
+  // One edge with rst_ni low (synchronous reset); dump as for tick().
+  template <class Dump>
+  void reset(Dump&& dump) {
     Model& m = *model_;
     m.rst_ni = 0;
     m.feed_modulus_i = modulus_;
     m.frame_i = 0;
     m.frame_valid_i = 0;
     m.tape_end_i = 0;
-    clock([](int) {});
+    clock(dump);
     m.rst_ni = 1;
   }
+  void reset() { reset([](int) {}); }
 
   // One rising edge with these inputs. dump(phase) runs after each eval (0: clk low,
   // 1: after the edge), e.g. to write a VCD sample.

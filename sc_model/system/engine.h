@@ -1,42 +1,45 @@
-// An interpolator engine in the system model: the golden model or the verilated RTL,
-// bound to the system's signals, with its own VCD tracer.
-// Idea: both engines write VCD with their own simulator's tracer (SystemC's sc_trace for
-// the golden model, Verilator's VerilatedVcdSc for the RTL) and both files name the ports
-// identically: SystemC's tracer puts everything under a root scope "SystemC", so the
-// system's top module is named "SystemC" and the engine instance "interp"; Verilator then
-// scopes the RTL as "SystemC.interp" / "interp_top", and the golden engine's ports are
-// traced as "interp.interp_top.<port>" with the RTL's bit widths. Full names are
-// SystemC.interp.interp_top.<port> in both files (the RTL's file also has its internals).
+// An interpolator engine of the system model: the golden model or the verilated RTL, clocked
+// as plain C++ by the system's one process (system_top.h), with its own VCD tracer.
+// Idea: SystemC's scheduler costs more per clock than the design itself (several process
+// activations and a signal update per port per clock, docs/performance.md), so the engine
+// is not a SystemC module with ports: the system steps it directly, and only a VCD window
+// runs clock by clock in SystemC time. Both engines write VCD with their own simulator's
+// tracer (SystemC's sc_trace over the system's wave signals for the golden model,
+// Verilator's VerilatedVcdC for the RTL) under the same names: SystemC's tracer puts
+// everything under a root scope "SystemC", the golden engine's ports are traced as
+// "interp.interp_top.<port>" with the RTL's bit widths, and the verilated model is named
+// "SystemC.interp" (verilated_interp.h). Full names are SystemC.interp.interp_top.<port>
+// in both files (the RTL's file also has its internals).
 #pragma once
 #include <memory>
 #include <string>
 
-#include <systemc>
-
 #include "interp_ports.h"
-#include "interp_signals.h"
 
 namespace ncinterp::system {
+
+struct WaveSignals;  // interp_signals.h
 
 class Engine {
  public:
   virtual ~Engine() = default;
-  // Starts writing a VCD to `path` now (during the simulation, at a clock's falling edge);
-  // the first values dumped are the signals' current values.
+  // The reset edge (cycle 0): one edge with rst_ni low.
+  virtual void reset() = 0;
+  // One rising edge with these inputs (those before the edge).
+  virtual void tick(const InterpInputs& in) = 0;
+  // The outputs after the last edge.
+  virtual const InterpOutputs& outputs() const = 0;
+  // Starts writing a VCD to `path` now, half a clock before the next edge; every edge from
+  // then on is in it. The golden engine traces the system's wave signals, which the system
+  // drives clock by clock while a VCD is open.
   virtual void open_vcd(const std::string& path) = 0;
   // Flushes and closes the VCD (no-op when none is open).
   virtual void close_vcd() = 0;
 };
 
-// The engine instance is created as a child of the current module (name "interp").
-std::unique_ptr<Engine> make_golden_engine(const InterpConfig& cfg,
-                                           sc_core::sc_signal_in_if<bool>& clk,
-                                           InterpSignals& signals);
-// Throws std::runtime_error when this build has no verilated SystemC RTL (ncinterp_rtl_sc).
-// `with_trace` must be true for open_vcd to work (Verilator's traceEverOn).
-std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg,
-                                        sc_core::sc_signal_in_if<bool>& clk,
-                                        InterpSignals& signals, bool with_trace);
-bool rtl_engine_available();
+std::unique_ptr<Engine> make_golden_engine(const InterpConfig& cfg, const WaveSignals& waves);
+// `with_trace`: the trace-enabled verilated model (needed by open_vcd; a little slower).
+// The RTL is verilated with the default widths: throws std::runtime_error for others.
+std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg, double clock_hz, bool with_trace);
 
 }  // namespace ncinterp::system

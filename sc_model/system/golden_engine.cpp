@@ -1,9 +1,10 @@
-// The golden engine: GoldenInterpModule plus SystemC's own VCD tracer over its ports,
-// named and sized like the RTL's ports in Verilator's VCD (see engine.h).
+// The golden engine: GoldenInterp stepped directly, and SystemC's own VCD tracer over the
+// system's wave signals, named and sized like the RTL's ports in Verilator's VCD (engine.h).
 #include <systemc>
 
 #include "engine.h"
-#include "golden_module.h"
+#include "interp_signals.h"
+#include "interp_top.h"
 
 namespace ncinterp::system {
 
@@ -11,11 +12,12 @@ namespace {
 
 class GoldenEngine : public Engine {
  public:
-  GoldenEngine(const InterpConfig& cfg, sc_core::sc_signal_in_if<bool>& clk, InterpSignals& s)
-      : cfg_(cfg), clk_(clk), s_(s), module_("interp", cfg) {
-    bind_engine(module_, clk, s);
-  }
+  GoldenEngine(const InterpConfig& cfg, const WaveSignals& waves) : model_(cfg), waves_(waves) {}
   ~GoldenEngine() override { close_vcd(); }
+
+  void reset() override { model_.reset(); }
+  void tick(const InterpInputs& in) override { model_.tick(in); }
+  const InterpOutputs& outputs() const override { return model_.outputs(); }
 
   void open_vcd(const std::string& path) override {
     close_vcd();
@@ -26,15 +28,15 @@ class GoldenEngine : public Engine {
     file_ = sc_core::sc_create_vcd_trace_file(base.c_str());
     file_->set_time_unit(1, sc_core::SC_PS);  // Verilator's VCD is in ps as well
     const std::string p = "interp.interp_top.";
-    sc_core::sc_trace(file_, clk_, p + "clk_i");
-    sc_core::sc_trace(file_, s_.rst_ni, p + "rst_ni");
-    trace(s_.feed_modulus_i, p + "feed_modulus_i", cfg_.modulus_width);
-    trace(s_.frame_i, p + "frame_i", 8);
-    sc_core::sc_trace(file_, s_.frame_valid_i, p + "frame_valid_i");
-    sc_core::sc_trace(file_, s_.tape_end_i, p + "tape_end_i");
-    const InterpConfig& cfg = cfg_;
-#define INTERP_OUTPUT(name, kind, width) \
-  trace_output<Port##kind>(s_.name##_o, p + #name "_o", width);
+    const WaveSignals& s = waves_;
+    sc_core::sc_trace(file_, s.clk_i, p + "clk_i");
+    sc_core::sc_trace(file_, s.rst_ni, p + "rst_ni");
+    trace(s.feed_modulus_i, p + "feed_modulus_i", model_.config().modulus_width);
+    trace(s.frame_i, p + "frame_i", 8);
+    sc_core::sc_trace(file_, s.frame_valid_i, p + "frame_valid_i");
+    sc_core::sc_trace(file_, s.tape_end_i, p + "tape_end_i");
+    const InterpConfig& cfg = model_.config();
+#define INTERP_OUTPUT(name, kind, width) trace_output<Port##kind>(s.name##_o, p + #name "_o", width);
 #include "interp_outputs.def"
 #undef INTERP_OUTPUT
   }
@@ -61,19 +63,15 @@ class GoldenEngine : public Engine {
       trace(sig, name, width);
   }
 
-  InterpConfig cfg_;
-  sc_core::sc_signal_in_if<bool>& clk_;
-  InterpSignals& s_;
-  GoldenInterpModule module_;
+  GoldenInterp model_;
+  const WaveSignals& waves_;
   sc_core::sc_trace_file* file_ = nullptr;
 };
 
 }  // namespace
 
-std::unique_ptr<Engine> make_golden_engine(const InterpConfig& cfg,
-                                           sc_core::sc_signal_in_if<bool>& clk,
-                                           InterpSignals& signals) {
-  return std::make_unique<GoldenEngine>(cfg, clk, signals);
+std::unique_ptr<Engine> make_golden_engine(const InterpConfig& cfg, const WaveSignals& waves) {
+  return std::make_unique<GoldenEngine>(cfg, waves);
 }
 
 }  // namespace ncinterp::system

@@ -11,6 +11,7 @@
 
 #include "atomic_file.h"
 #include "frame_source.h"
+#include "system_top.h"
 
 namespace ncinterp::system {
 
@@ -101,14 +102,12 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   const auto t0 = std::chrono::steady_clock::now();
   auto top = std::make_unique<SystemTop>("SystemC", setup, FrameSource(frames, r.cycles_per_frame),
                                          program);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  top->start();
   sc_core::sc_start();
   top->finish();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.summary = top->monitor().finish();
   r.limit_reached = top->limit_reached();
-  r.frames_taken = top->reader().source().frames_taken();
+  r.frames_taken = top->source().frames_taken();
 
   if (!opt.vcd_path.empty()) {
     if (!top->vcd_started())

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "play_monitor.h"
-#include "system_top.h"
+#include "interp_ports.h"
 #include "atomic_file.h"
 #include "tape.h"
 #include "vcd_window.h"

@@ -1,80 +1,86 @@
-// The RTL engine: rtl/interp_top.sv verilated for SystemC (target ncinterp_rtl_sc, class
-// Vinterp_top_sc) and Verilator's own SystemC VCD tracer (VerilatedVcdSc), opened and
-// closed on demand.
-// Built only when the verilated model exists (NCINTERP_HAVE_RTL_SC); otherwise asking for
-// it is a clear error.
+// The RTL engine: rtl/interp_top.sv verilated as plain C++ (VerilatedInterp, the cosim's
+// wrapper), stepped directly, and Verilator's own VCD tracer (VerilatedVcdC), opened on
+// demand. Without a VCD the model is the one built without tracing (Vinterp_top), which is
+// faster; with one it is Vinterp_top_trace.
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
+#include "Vinterp_top.h"
+#include "Vinterp_top_trace.h"
 #include "engine.h"
-
-#ifdef NCINTERP_HAVE_RTL_SC
-#include <verilated.h>
-#include <verilated_vcd_sc.h>
-
-#include "Vinterp_top_sc.h"
-#endif
+#include "verilated_interp.h"
+#include "verilated_vcd_c.h"
 
 namespace ncinterp::system {
 
-#ifdef NCINTERP_HAVE_RTL_SC
-
 namespace {
 
+template <class Model>
 class RtlEngine : public Engine {
  public:
-  RtlEngine(sc_core::sc_signal_in_if<bool>& clk, InterpSignals& s, bool with_trace)
-      : with_trace_((Verilated::traceEverOn(with_trace), with_trace)), model_("interp") {
-    bind_engine(model_, clk, s);
-  }
+  RtlEngine(const InterpConfig& cfg, double clock_hz)
+      : rtl_(cfg),
+        period_ps_(std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / clock_hz)))) {}
   ~RtlEngine() override { close_vcd(); }
 
+  void reset() override {
+    cycle_ = 0;
+    rtl_.reset([this](int phase) { dump(phase); });
+    out_ = rtl_.outputs();
+  }
+  void tick(const InterpInputs& in) override {
+    ++cycle_;
+    if (vcd_)
+      rtl_.tick(in, [this](int phase) { dump(phase); });
+    else
+      rtl_.tick(in);
+    out_ = rtl_.outputs();
+  }
+  const InterpOutputs& outputs() const override { return out_; }
+
   void open_vcd(const std::string& path) override {
-    if (!with_trace_) throw std::logic_error("RTL engine built without tracing");
-    close_vcd();
-    // trace() registers the model with a fresh tracer; it must precede open().
-    vcd_ = std::make_unique<VerilatedVcdSc>();
-    model_.trace(vcd_.get(), 99);
-    vcd_->open(path.c_str());
+    if constexpr (!std::is_same_v<Model, Vinterp_top_trace>) {
+      throw std::logic_error("RTL engine built without tracing");
+    } else {
+      close_vcd();
+      rtl_.context().traceEverOn(true);
+      // trace() registers the model with a fresh tracer; it must precede open().
+      vcd_ = std::make_unique<VerilatedVcdC>();
+      rtl_.model().trace(vcd_.get(), 99);
+      vcd_->open(path.c_str());
+      if (!vcd_->isOpen()) throw std::runtime_error(path + ": cannot open for writing");
+    }
   }
 
   void close_vcd() override {
     if (!vcd_) return;
     vcd_->close();
-    // The tracer registered itself with the kernel but does not unregister on destruction;
-    // its sc_trace_file base is private, hence the C-style cast.
-    sc_core::sc_get_curr_simcontext()->remove_trace_file((sc_core::sc_trace_file*)vcd_.get());
     vcd_.reset();
   }
 
  private:
-  bool with_trace_;
-  Vinterp_top_sc model_;
-  std::unique_ptr<VerilatedVcdSc> vcd_;
+  // docs/waves.md time base: edge c at (c + 1) periods, clk low half a period before it.
+  void dump(int phase) {
+    if (vcd_) vcd_->dump((cycle_ + 1) * period_ps_ - (phase == 0 ? period_ps_ / 2 : 0));
+  }
+
+  VerilatedInterp<Model> rtl_;
+  uint64_t period_ps_;
+  uint64_t cycle_ = 0;
+  InterpOutputs out_;
+  std::unique_ptr<VerilatedVcdC> vcd_;
 };
 
 }  // namespace
 
-bool rtl_engine_available() { return true; }
-
-std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg,
-                                        sc_core::sc_signal_in_if<bool>& clk,
-                                        InterpSignals& signals, bool with_trace) {
+std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg, double clock_hz, bool with_trace) {
   // The verilated model has the RTL's default parameters: the configuration must match.
   if (!cfg.same_parameters(InterpConfig{}))
     throw std::runtime_error("the verilated RTL has the default widths only");
-  return std::make_unique<RtlEngine>(clk, signals, with_trace);
+  if (with_trace) return std::make_unique<RtlEngine<Vinterp_top_trace>>(cfg, clock_hz);
+  return std::make_unique<RtlEngine<Vinterp_top>>(cfg, clock_hz);
 }
-
-#else
-
-bool rtl_engine_available() { return false; }
-
-std::unique_ptr<Engine> make_rtl_engine(const InterpConfig&, sc_core::sc_signal_in_if<bool>&,
-                                        InterpSignals&, bool) {
-  throw std::runtime_error(
-      "this build has no verilated SystemC RTL (target ncinterp_rtl_sc); use --engine golden");
-}
-
-#endif
 
 }  // namespace ncinterp::system

@@ -1,46 +1,28 @@
 // The SystemC system (see system_top.h).
 #include "system_top.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ncinterp::system {
-
-namespace {
-
-sc_core::sc_time period_of(double clock_hz) { return sc_core::sc_time(1.0 / clock_hz, sc_core::SC_SEC); }
-
-}  // namespace
 
 SystemTop::SystemTop(sc_core::sc_module_name name, const SystemSetup& setup, FrameSource source,
                      const tape::Program& program)
     : sc_core::sc_module(name),
       setup_(setup),
-      clk_("clk", period_of(setup.clock_hz), 0.5, period_of(setup.clock_hz), true),
-      reader_("reader", std::move(source)),
+      // In ps, SystemC's default time resolution and the VCDs' time unit.
+      period_ps_(std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / setup.clock_hz)))),
+      source_(std::move(source)),
+      engine_(setup.engine == EngineKind::kGolden
+                  ? make_golden_engine(setup.config, waves_)
+                  : make_rtl_engine(setup.config, setup.clock_hz, !setup.vcd_path.empty())),
       monitor_(program, setup.config.feed_modulus) {
-  reader_.clk_i(clk_);
-  reader_.rst_ni(signals_.rst_ni);
-  reader_.frame_ready_i(signals_.frame_ready_o);
-  reader_.frame_o(signals_.frame_i);
-  reader_.frame_valid_o(signals_.frame_valid_i);
-  reader_.tape_end_o(signals_.tape_end_i);
-  engine_ = setup.engine == EngineKind::kGolden
-                ? make_golden_engine(setup.config, clk_, signals_)
-                : make_rtl_engine(setup.config, clk_, signals_, !setup.vcd_path.empty());
-  signals_.feed_modulus_i.write(setup.config.feed_modulus);
-  signals_.rst_ni.write(false);
+  waves_.feed_modulus_i.write(setup.config.feed_modulus);
   SC_HAS_PROCESS(SystemTop);
-  SC_METHOD(falling_edge);
-  sensitive << clk_.negedge_event();
-  dont_initialize();
+  SC_THREAD(run);
 }
 
 SystemTop::~SystemTop() = default;
-
-void SystemTop::start() {
-  if (!setup_.vcd_path.empty() && setup_.vcd_window.from == 0) {
-    engine_->open_vcd(setup_.vcd_path);
-    vcd_open_ = true;
-  }
-}
 
 void SystemTop::finish() {
   if (!vcd_open_) return;
@@ -49,27 +31,62 @@ void SystemTop::finish() {
   vcd_closed_ = true;
 }
 
-InterpOutputs SystemTop::sample() const {
-  const InterpConfig& cfg = setup_.config;
-  InterpOutputs o;
-#define INTERP_OUTPUT(name, kind, width) \
-  o.name = Port##kind::from_signal(signals_.name##_o.read(), width);
-#include "interp_outputs.def"
-#undef INTERP_OUTPUT
-  return o;
+void SystemTop::catch_up() {
+  const sc_core::sc_time fall = sc_core::sc_time::from_value((cycle_ + 1) * period_ps_ + period_ps_ / 2);
+  if (fall > sc_core::sc_time_stamp()) wait(fall - sc_core::sc_time_stamp());
 }
 
-void SystemTop::falling_edge() {
-  const bool in_reset = !signals_.rst_ni.read();
-  if (!in_reset) ++cycle_;  // the first falling edge follows the reset edge: cycle 0
-  monitor_.observe(cycle_, sample());
-  if (in_reset) signals_.rst_ni.write(true);
+void SystemTop::drive_waves(bool clk) {
+  waves_.clk_i.write(clk);
+  waves_.rst_ni.write(!in_reset_);
+  waves_.write_inputs(source_.inputs());
+  // Before the reset edge the outputs keep the signals' initial 0 (the RTL's are unknown).
+  if (reset_taken_) waves_.write_outputs(engine_->outputs(), setup_.config);
+}
+
+void SystemTop::open_vcd() {
+  drive_waves(false);
+  engine_->open_vcd(setup_.vcd_path);
+  vcd_open_ = true;
+}
+
+void SystemTop::run() {
+  const sc_core::sc_time half = sc_core::sc_time::from_value(period_ps_ / 2);
+  // t = 0, clock low before the reset edge: a window from cycle 0 opens here.
+  if (!setup_.vcd_path.empty() && setup_.vcd_window.from == 0) open_vcd();
+  wait(sc_core::sc_time::from_value(period_ps_));
+  engine_->reset();
+  reset_taken_ = true;
+  for (;;) {
+    // Edge cycle_ has been taken. In a window: its half clock high, then the fall.
+    if (vcd_open_) {
+      drive_waves(true);
+      wait(half);
+    }
+    const bool more = falling_edge();  // may open or close the window at this fall
+    if (vcd_open_) drive_waves(false);
+    if (!more) break;
+    // The next rising edge: the engine sees the reader's inputs from before it, the reader
+    // the engine's frame_ready from before it.
+    const bool ready = engine_->outputs().frame_ready;
+    engine_->tick(source_.inputs());
+    source_.clock(ready);
+    ++cycle_;
+    if (vcd_open_) wait(half);
+  }
+  catch_up();
+  sc_core::sc_stop();
+}
+
+bool SystemTop::falling_edge() {
+  monitor_.observe(cycle_, engine_->outputs());
+  in_reset_ = false;
 
   // VCD window: open half a clock before edge `from`, close half a clock after edge `to`.
   if (!setup_.vcd_path.empty()) {
     if (!vcd_open_ && !vcd_closed_ && cycle_ + 1 >= setup_.vcd_window.from) {
-      engine_->open_vcd(setup_.vcd_path);
-      vcd_open_ = true;
+      catch_up();
+      open_vcd();
     } else if (vcd_open_ && cycle_ >= setup_.vcd_window.to) {
       engine_->close_vcd();
       vcd_open_ = false;
@@ -78,12 +95,12 @@ void SystemTop::falling_edge() {
   }
   if (setup_.progress && cycle_ % setup_.progress_every == 0)
     setup_.progress(cycle_, monitor_.pulse_block());
-  if (monitor_.finished()) {
-    sc_core::sc_stop();
-  } else if (cycle_ >= setup_.max_cycles) {
+  if (monitor_.finished()) return false;
+  if (cycle_ >= setup_.max_cycles) {
     limit_reached_ = true;
-    sc_core::sc_stop();
+    return false;
   }
+  return true;
 }
 
 }  // namespace ncinterp::system

@@ -1,9 +1,15 @@
-// The SystemC system: clock, tape reader, one interpolator engine, and the monitor that
-// watches the engine's ports every clock, controls the VCD window and stops the run.
-// Idea: the top module is named "SystemC" (see engine.h: that makes the two tracers' signal
-// names equal). Clock and reset: the first rising edge (t = one period) is the reset edge,
-// cycle 0; rst_ni is released at the following falling edge; cycle c is the c-th rising edge
-// after it. The monitor samples at falling edges, when every output of edge c is settled.
+// The SystemC system: tape reader, one interpolator engine, and the monitor that watches
+// the engine's outputs every clock, controls the VCD window and stops the run.
+// Idea: one SystemC process (a thread) clocks the whole system as plain C++: per clock the
+// reader (FrameSource, the cosim's own) and the engine (engine.h) take one edge and the
+// monitor sees the outputs. SystemC time follows the clocks; outside a VCD window it is
+// advanced in one step per batch of clocks, so the scheduler costs nothing per clock.
+// Inside a window the thread runs clock by clock, half a period at a time, and drives the
+// wave signals (interp_signals.h) that the golden engine's SystemC tracer records.
+// Clock and reset: the first rising edge (t = one period) is the reset edge, cycle 0;
+// rst_ni is released at the following falling edge; cycle c is the c-th rising edge after
+// it, at (c + 1) periods. The monitor samples at falling edges, when every output of edge
+// c is settled, and the reader and the engine see at edge c + 1 what was there before it.
 #pragma once
 #include <functional>
 #include <memory>
@@ -12,9 +18,9 @@
 #include <systemc>
 
 #include "engine.h"
+#include "frame_source.h"
 #include "interp_signals.h"
 #include "play_monitor.h"
-#include "tape_reader_module.h"
 #include "vcd_window.h"
 
 namespace ncinterp::system {
@@ -36,29 +42,35 @@ class SystemTop : public sc_core::sc_module {
             const tape::Program& program);
   ~SystemTop() override;
 
-  // Call after sc_start(SC_ZERO_TIME): opens the VCD before the reset edge when the window
-  // starts at cycle 0.
-  void start();
   // Call after the simulation stopped: closes the VCD if it is still open.
   void finish();
 
   PlayMonitor& monitor() { return monitor_; }
-  const TapeReaderModule& reader() const { return reader_; }
+  const FrameSource& source() const { return source_; }
   bool limit_reached() const { return limit_reached_; }
   bool vcd_started() const { return vcd_open_ || vcd_closed_; }
   uint64_t cycle() const { return cycle_; }
 
  private:
-  void falling_edge();
-  InterpOutputs sample() const;
+  void run();
+  // The work at the falling edge after edge cycle_; false when the run is over.
+  bool falling_edge();
+  // Brings SystemC time to the falling edge after edge cycle_ (outside a VCD window it
+  // lags behind the clocks).
+  void catch_up();
+  void open_vcd();
+  // The wave signals of this half clock (clk high: edge cycle_; low: the fall after it).
+  void drive_waves(bool clk);
 
   SystemSetup setup_;
-  sc_core::sc_clock clk_;
-  InterpSignals signals_;
-  TapeReaderModule reader_;
+  uint64_t period_ps_;
+  WaveSignals waves_;
+  FrameSource source_;
   std::unique_ptr<Engine> engine_;
   PlayMonitor monitor_;
   uint64_t cycle_ = 0;
+  bool reset_taken_ = false;  // the engine has taken the reset edge
+  bool in_reset_ = true;      // rst_ni low: until the fall after the reset edge
   bool vcd_open_ = false, vcd_closed_ = false;
   bool limit_reached_ = false;
 };

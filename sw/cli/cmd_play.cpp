@@ -61,8 +61,6 @@ int run(const PlayArgs& a) {
   if (!a.vcd_to.empty()) opt.vcd_to = parse_vcd_bound(a.vcd_to);
   if ((opt.vcd_from || opt.vcd_to) && a.vcd.empty())
     throw std::invalid_argument("--vcd-from/--vcd-to need --vcd");
-  if (opt.engine == EngineKind::kRtl && !rtl_engine_available())
-    throw std::runtime_error("this build has no verilated SystemC RTL; use --engine golden");
 
   const std::vector<uint8_t> frames = tape::load_frames(a.tape);
   // The software reader's view of the tape: the programmed blocks the monitors judge the
