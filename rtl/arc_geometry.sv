@@ -105,7 +105,7 @@ module arc_geometry #(
       end else if (ax_too_wide || ay_too_wide) begin
         error_code_o = interp_pkg::ErrValueTooWide;
       end else begin
-        error_o = 1'bx;
+        error_o = 1'b0;
       end
 
       x0_o     = i_i;

@@ -3,22 +3,20 @@
 // What: while the decoder holds a complete arc block (run_i), this module (a) checks it:
 // zero radius, quadrant and register width at once (arc_geometry.sv), and the end's
 // distance to the circle on one serial adder (arc_radius_check.sv, 5W + 5 clocks);
-// and (b) runs the block's circle DDA once without pulses, one iteration per clock, adding
-// F at every iteration. When both are over, S = F * N (N = the block's iteration count)
-// goes with the block, and the feed generator plays the N iterations in M / F clocks, as
-// it plays the 2^k iterations of a line (docs/circle-dda.md section 4). A failed radius
-// check stops the dry run. The golden twin is sc_model/golden/arc_prepare.cpp.
+// and (b) runs the block's circle DDA once without pulses, one iteration per clock, and
+// marks each iteration (iterate_o), at which the decoder adds F to the block's step: when
+// both are over, S = F * N (N = the block's iteration count) goes with the block, and the
+// feed generator plays the N iterations in M / F clocks, as it plays the 2^k iterations of
+// a line (docs/circle-dda.md section 4). A failed radius check stops the dry run. The
+// golden twin is sc_model/golden/arc_prepare.cpp.
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
 // high in that clock; otherwise the dry run iterates at the next edges and done_o rises
 // in the clock after the later of the last iteration and the last check step, i.e.
-// max(N, 5W + 5) clocks after the start edge. done_o and the error are combinational
-// from registers (and the held block); the decoder acts on them at that edge.
+// max(N, 5W + 5) clocks after the start edge. done_o, the error and iterate_o are
+// combinational from registers (and the held block); the decoder acts on them at that edge.
 module arc_prepare #(
   parameter int IncWidth  = 16,
-  parameter int FeedWidth = 32,
-  parameter int KWidth    = $clog2(IncWidth + 1),
-  // S = F * N with N < 2^(W+1).
-  parameter int StepWidth = FeedWidth + IncWidth + 1
+  parameter int KWidth    = $clog2(IncWidth + 1)
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -32,11 +30,10 @@ module arc_prepare #(
   input  logic [IncWidth-1:0]  j_i,
   input  logic                 j_neg_i,
   input  logic                 ccw_i,
-  input  logic [FeedWidth-1:0] feed_i,
   output logic                 done_o,      // the result is final in this clock
   output logic                 err_o,       // ... and it is an error
   output logic [3:0]           err_code_o,
-  output logic [StepWidth-1:0] step_o,      // S = F * N (valid at done without error)
+  output logic                 iterate_o,   // a dry-run iteration at this edge
   // The arc's geometry for the player's circle DDA (valid in clocks with run_i).
   output logic [KWidth-1:0]    k_o,
   output logic                 grow_x_o,
@@ -45,9 +42,7 @@ module arc_prepare #(
 
 
   // running_q: the arc's dry run and radius check are in progress (after the start edge).
-  // step_q: F summed once per dry-run iteration.
   logic                 running_q, running_d;
-  logic [StepWidth-1:0] step_q, step_d;
 
   logic                start;
   logic [IncWidth-1:0] x0, y0, x1, y1;
@@ -100,28 +95,24 @@ module arc_prepare #(
     end
 
     running_d = running_q;
-    step_d    = step_q;
+    iterate_o = 1'b0;
     if (start) begin
       running_d = !geo_err;
-      step_d    = '0;
     end else if (!run_i || done_o) begin
       running_d = 1'b0;
-    end else if (!dry_done) begin
-      step_d = step_q + StepWidth'(feed_i);
+    end else begin
+      iterate_o = !dry_done;
     end
   end
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       running_q <= 1'b0;
-      step_q    <= '0;
     end else begin
       running_q <= running_d;
-      step_q    <= step_d;
     end
   end
 
-  assign step_o   = step_q;
   assign k_o      = k;
   assign grow_x_o = grow_x;
   assign grow_y_o = grow_y;

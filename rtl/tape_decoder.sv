@@ -8,17 +8,20 @@
 //   - block assembly with error capture (this module, 3.3 and 3.4): the decoder's state,
 //     the words' meaning (G and F are modal), the block's end, the handoff, and the first
 //     error, with its code, the bad block's N (or the previous one) and the frame's offset.
-// An arc block (G02/G03) is first checked and dry-run by arc_prepare.sv (3.5), which gives
-// its feed step S = F * N (N = its circle DDA iterations); a line's S is F << k. The error
-// is only reported by interp_top once every good block has played.
+// A motion block is prepared before it is held: the feed generator's step S is summed here
+// serially, on one register. A line's S = F << k takes k shifts; an arc block (G02/G03) is
+// checked and dry-run by arc_prepare.sv (3.5), and F is added at each of its circle DDA's
+// N iterations: S = F * N. The error is only reported by interp_top once every good block
+// has played.
 // Golden twin: GoldenTapeDecoder (sc_model/golden/tape_decoder.h), whose sections "Frame
 // input", "Word parser" and "Block assembly and error capture" follow these three parts
 // decision by decision.
 //
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
-// a line block puts the decoder in HOLD, the LF of an arc block in ARC until arc_prepare is
-// done (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block at
-// the first edge where it is empty (blk_ready_i). tape_end_i (registered) with no frame
+// a motion block puts the decoder in PREPARE: a line for k + 1 clocks (S = F at the LF,
+// doubled at the next k edges, HOLD at the one after), an arc until arc_prepare is done
+// (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block at the
+// first edge where it is empty (blk_ready_i). tape_end_i (registered) with no frame
 // waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
@@ -84,7 +87,7 @@ module tape_decoder #(
     StHold    = 3'd3,  // a decoded motion block waits for the block buffer
     StEnd     = 3'd4,  // after the end block: only % NUL CR LF space
     StError   = 3'd5,  // stopped on an error
-    StArc     = 3'd6   // an arc block is checked and its iterations counted (arc_prepare)
+    StPrepare = 3'd6   // a motion block's S is summed (and an arc checked, arc_prepare)
   } state_e;
 
   state_e state_q, state_d;
@@ -116,6 +119,10 @@ module tape_decoder #(
   // circle DDA's k and the growth of |x|, |y|, from arc_prepare's geometry when the arc is
   // ready. So the player has nothing to compute at the load.
   logic [KWidth-1:0]    k_q, k_d;
+  // step_q: the block's feed step S, summed in PREPARE (serially: one shift or one add of F
+  // per clock, no multiplier or barrel shifter). shifts_q: a line's doublings still to do.
+  logic [StepWidth-1:0] step_q, step_d;
+  logic [KWidth-1:0]    shifts_q, shifts_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
   // a motion G); the block ends the program (M02/M30).
@@ -136,11 +143,12 @@ module tape_decoder #(
   logic [OffsetWidth-1:0] fail_offset;
   logic                   word_ok;      // the word ended by this frame was committed
   logic                   clear_block;  // the block's per-block registers clear at this edge
-  // The arc block being prepared (StArc): result in the clock with arc_done. in_arc is
-  // its own signal because Icarus 11 mistypes an enum literal used in a port connection.
-  logic                   in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
+  // The block being prepared (StPrepare); for an arc, arc_prepare's result is in the clock
+  // with arc_done, and arc_iterate marks its dry run's iterations. preparing and in_arc are
+  // their own signals because Icarus 11 mistypes an enum literal used in a port connection.
+  logic                   preparing, in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
+  logic                   arc_iterate;
   logic [3:0]             arc_code;
-  logic [StepWidth-1:0]   arc_step;
   logic [KWidth-1:0]      arc_k;
 
   // Bit length of a value (position of its highest 1 plus one; 0 for 0).
@@ -153,9 +161,9 @@ module tape_decoder #(
 
   tape_frame_input #(.OffsetWidth(OffsetWidth)) u_frame (
     .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
-    .accept_i(state_q != StHold && !in_arc && state_q != StError),
+    .accept_i(state_q != StHold && !preparing && state_q != StError),
     .error_next_i(state_next == StError),
-    .busy_next_i(state_next == StHold || state_next == StArc),
+    .busy_next_i(state_next == StHold || state_next == StPrepare),
     .take_o(take), .char_o(ch), .parity_err_o(parity_err), .offset_o(offset),
     .waiting_o(waiting), .tape_ended_o(tape_end_q)
   );
@@ -173,11 +181,12 @@ module tape_decoder #(
     .word_start_o(word_start)
   );
 
-  assign in_arc = state_q == StArc;
+  assign preparing = state_q == StPrepare;
+  assign in_arc    = preparing && motion_q != interp_pkg::MotionLine;
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
-  assign update = take || in_arc || state_q == StHold || tape_cut;
+  assign update = take || preparing || state_q == StHold || tape_cut;
   assign state_next = update ? state_d : state_q;
 
   always_comb begin
@@ -187,7 +196,8 @@ module tape_decoder #(
     // away (no gate per next-state bit).
     {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
-     grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, clear_block} = 'x;
+     step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok,
+     clear_block} = 'x;
     if (update) begin
       state_d       = state_q;
       n_d           = n_q;
@@ -205,6 +215,8 @@ module tape_decoder #(
       err_block_d   = err_block_q;
       err_offset_d  = err_offset_q;
       k_d           = k_q;
+      step_d        = step_q;
+      shifts_d      = shifts_q;
       grow_x_d      = grow_x_q;
       grow_y_d      = grow_y_q;
       fail          = 1'b0;
@@ -296,11 +308,12 @@ module tape_decoder #(
                         fail = 1'b1;
                         fail_code = interp_pkg::ErrMissingFeed;
                       end else begin
-                        // A line waits for the buffer (cleared at the handoff); an arc is
-                        // prepared first.
-                        if (motion_d == interp_pkg::MotionLine) state_d = StHold;
-                        else state_d = StArc;
-                        k_d = bit_length(dx_d | dy_d);
+                        // Prepared first (the block is cleared at the handoff): S
+                        // starts at F for a line (then k doublings), at 0 for an arc.
+                        state_d  = StPrepare;
+                        k_d      = bit_length(dx_d | dy_d);
+                        shifts_d = k_d;
+                        step_d   = motion_d == interp_pkg::MotionLine ? StepWidth'(feed_d) : '0;
                       end
                     end else begin
                       if (end_blk_d) state_d = StEnd;
@@ -319,10 +332,21 @@ module tape_decoder #(
                 end
               end
             end
-            default: ;  // StHold, StArc, StError: no frame is processed
+            default: ;  // StHold, StPrepare, StError: no frame is processed
           endcase
         end
-      end else if (state_q == StArc) begin
+      end else if (preparing && !in_arc) begin
+        // A line: S = F << k, one doubling per clock (S < 2^StepWidth: F < 2^FeedWidth,
+        // k <= W).
+        if (shifts_q == '0) begin
+          state_d = StHold;
+        end else begin
+          step_d   = step_q << 1;
+          shifts_d = shifts_q - 1'b1;
+        end
+      end else if (in_arc) begin
+        // An arc: F once per dry-run iteration, S = F * N (< 2^StepWidth: N < 2^(W+1)).
+        if (arc_iterate) step_d = step_q + StepWidth'(feed_q);
         if (arc_done) begin
           if (arc_err) begin
             fail = 1'b1;
@@ -362,15 +386,14 @@ module tape_decoder #(
     end
   end
 
-  // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N and
-  // sums S = F * N. Its result stays in its registers until the next arc starts, i.e. for
-  // the whole HOLD that follows.
-  arc_prepare #(.IncWidth(IncWidth), .FeedWidth(FeedWidth), .KWidth(KWidth)) u_arc (
+  // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N (the
+  // decoder adds F at each, above).
+  arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth)) u_arc (
     .clk_i, .rst_ni, .run_i(in_arc),
     .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
-    .ccw_i(motion_q == interp_pkg::MotionArcCcw), .feed_i(feed_q),
-    .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .step_o(arc_step),
+    .ccw_i(motion_q == interp_pkg::MotionArcCcw),
+    .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .iterate_o(arc_iterate),
     .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
   );
 
@@ -387,6 +410,8 @@ module tape_decoder #(
       i_q  <= '0;  i_neg_q  <= 1'b0;
       j_q  <= '0;  j_neg_q  <= 1'b0;
       k_q           <= '0;
+      step_q        <= '0;
+      shifts_q      <= '0;
       grow_x_q      <= 1'b0;
       grow_y_q      <= 1'b0;
       n_seen_q      <= 1'b0;
@@ -406,6 +431,8 @@ module tape_decoder #(
       i_q  <= i_d;   i_neg_q  <= i_neg_d;
       j_q  <= j_d;   j_neg_q  <= j_neg_d;
       k_q           <= k_d;
+      step_q        <= step_d;
+      shifts_q      <= shifts_d;
       grow_x_q      <= grow_x_d;
       grow_y_q      <= grow_y_d;
       n_seen_q      <= n_seen_d;
@@ -427,7 +454,7 @@ module tape_decoder #(
   assign blk_dy_neg_o  = dy_neg_q;
   assign blk_i_o       = i_q;
   assign blk_j_o       = j_q;
-  assign blk_step_o    = motion_q == interp_pkg::MotionLine ? StepWidth'(feed_q) << k_q : arc_step;
+  assign blk_step_o    = step_q;
   assign blk_k_o       = k_q;
   assign blk_grow_x_o  = grow_x_q;
   assign blk_grow_y_o  = grow_y_q;

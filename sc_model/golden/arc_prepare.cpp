@@ -4,12 +4,6 @@
 
 namespace ncinterp {
 
-namespace {
-
-constexpr uint64_t kStepClamp = uint64_t{1} << 63;
-
-}  // namespace
-
 ArcPrepare::ArcPrepare(unsigned inc_width)
     : inc_width_(inc_width), radius_(inc_width) {
   reset();
@@ -18,11 +12,10 @@ ArcPrepare::ArcPrepare(unsigned inc_width)
 void ArcPrepare::reset() {
   running_ = false;
   dry_ = CircleDda{};
-  step_ = 0;
   radius_ = ArcRadiusCheck(inc_width_);
 }
 
-ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
+ArcPrepare::Result ArcPrepare::edge(const ArcWords& w) {
   Result r;
   if (!running_) {
     // Start edge: geometric errors are final at once; otherwise load the dry run and
@@ -33,8 +26,7 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
       r.error = g_.error;
     }
     dry_.load(g_, !w.dx_neg, !w.dy_neg);
-    step_ = 0;
-    radius_.start();
+radius_.start();
     running_ = !r.done;
     return r;
   }
@@ -48,7 +40,7 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w, uint64_t feed) {
   }
   if (!dry_.done()) {
     dry_.iterate();
-    step_ = step_ + feed < kStepClamp ? step_ + feed : kStepClamp;  // feed < 2^63: no wrap
+    r.iterate = true;
   }
   if (!check_done) radius_.step(g_);
   return r;

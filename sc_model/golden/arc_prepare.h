@@ -4,10 +4,10 @@
 // radius, quadrant and register width at once from the geometry, the radius (end within
 // 1 BLU of the circle) serially on one adder in 5W + 5 clocks (ArcRadiusCheck); and (b)
 // runs the block's circle DDA once without pulses (a dry run, one iteration per clock) to
-// learn its iteration count N, summing F once per iteration. The block then carries S = F * N,
-// and the feed generator plays its N iterations in M / F clocks, like the 2^k iterations
-// of a line (docs/circle-dda.md section 4). Both run in parallel; a failed radius check
-// stops the dry run.
+// learn its iteration count N: the decoder adds F at each iteration it marks, so the block
+// carries S = F * N, and the feed generator plays its N iterations in M / F clocks, like
+// the 2^k iterations of a line (docs/circle-dda.md section 4). Both run in parallel; a
+// failed radius check stops the dry run.
 #pragma once
 #include <cstdint>
 
@@ -25,31 +25,27 @@ class ArcPrepare {
   void reset();
 
   // What the decoder sees in a clock with run_i = 1: done (the result is final; the
-  // decoder leaves its arc state at this edge) and the error code (kNone = good arc).
+  // decoder leaves its arc state at this edge), the error code (kNone = good arc), and
+  // whether the dry run iterates at this edge (iterate_o: the decoder adds F).
   struct Result {
     bool done = false;
     TapeError error = TapeError::kNone;
+    bool iterate = false;
   };
 
-  // One clock edge with run_i = 1 and the held block's words and F: returns the outputs
-  // of this clock (from the registers before the edge), then updates the registers.
-  Result edge(const ArcWords& w, uint64_t feed);
+  // One clock edge with run_i = 1 and the held block's words: returns the outputs of this
+  // clock (from the registers before the edge), then updates the registers.
+  Result edge(const ArcWords& w);
   // One clock edge with run_i = 0.
   void idle() { running_ = false; }
 
-  // S = F * N of the prepared block (valid after a done without error), clamped at 2^63:
-  // the RTL's step register is FeedWidth + W + 1 bits wide and never wraps, and a step that
-  // large saturates any feed modulus (M < 2^62), so the clamp is never observable.
-  uint64_t step() const { return step_; }
-
- private:
+private:
   unsigned inc_width_;
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   ArcGeometry g_;           // of the arc being prepared, from its start edge
   CircleDda dry_;           // the dry-run DDA
-  uint64_t step_ = 0;       // F added once per dry-run iteration: F * N
-  ArcRadiusCheck radius_;   // the serial radius check (5W + 5 clocks)
+ArcRadiusCheck radius_;   // the serial radius check (5W + 5 clocks)
 };
 
 }  // namespace ncinterp

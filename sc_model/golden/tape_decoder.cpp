@@ -9,6 +9,11 @@ namespace {
 
 uint64_t low_mask(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
 
+// An arc's S = F * N is clamped at 2^63: the RTL's step register is FeedWidth + W + 1 bits
+// wide and never wraps, and a step that large saturates any feed modulus (M < 2^62), so the
+// clamp is never observable.
+constexpr uint64_t kStepClamp = uint64_t{1} << 63;
+
 bool odd_parity(uint8_t frame) { return __builtin_parity(frame) != 0; }
 
 }  // namespace
@@ -39,6 +44,7 @@ void GoldenTapeDecoder::reset() {
   block_.motion = 1;
   block_.feed = 0;
   clear_block();
+  shifts_ = 0;
   arc_.reset();
   err_code_ = TapeError::kNone;
   err_block_ = 0;
@@ -50,12 +56,12 @@ void GoldenTapeDecoder::reset() {
 // dispatches the clock to the block assembly, as tape_decoder.sv does.
 
 void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
-  const bool process = in_valid_ && state_ != State::kHold && state_ != State::kArc &&
+  const bool process = in_valid_ && state_ != State::kHold && state_ != State::kPrepare &&
                        state_ != State::kError;
   if (process) {
     process_frame(in_frame_);
-  } else if (state_ == State::kArc) {
-    arc_edge();
+  } else if (state_ == State::kPrepare) {
+    prepare_edge();
   } else if (state_ == State::kHold) {
     if (buffer_empty) handoff();
   } else if (tape_end_q_ && !in_valid_ && state_ <= State::kComment) {
@@ -69,7 +75,7 @@ void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
   }
   tape_end_q_ = in.tape_end;
   ready_ = state_ != State::kError &&
-           !((state_ == State::kHold || state_ == State::kArc) && in_valid_);
+           !((state_ == State::kHold || state_ == State::kPrepare) && in_valid_);
 }
 
 void GoldenTapeDecoder::process_frame(uint8_t frame) {
@@ -91,7 +97,7 @@ void GoldenTapeDecoder::process_frame(uint8_t frame) {
     case State::kBody:
       return body_character(c, offset);
     case State::kHold:
-    case State::kArc:
+    case State::kPrepare:
     case State::kError:
       return;  // edge() does not process a frame in these states
   }
@@ -252,29 +258,35 @@ bool GoldenTapeDecoder::commit_word(Word w) {
 void GoldenTapeDecoder::end_of_block(uint32_t offset) {
   if (motion_block_) {
     if (block_.feed == 0) return fail(TapeError::kMissingFeed, offset);
-    if (block_.is_arc()) {
-      state_ = State::kArc;  // checked and dry-run first; S = F * N comes from that
-    } else {
-      // The block buffer takes it; cleared at the handoff. S = F << k, k = bit length of
-      // max(|dx|, |dy|) (the RTL's decoder computes k at the LF, S at the handoff).
-      const uint32_t d = block_.dx | block_.dy;
-      const unsigned k = d == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(d));
-      block_.step = block_.feed << k;
-      state_ = State::kHold;
-    }
+    // Prepared first (cleared at the handoff): S starts at F for a line, which is then
+    // doubled k times (k = bit length of max(|dx|, |dy|)), and at 0 for an arc.
+    const uint32_t d = block_.dx | block_.dy;
+    shifts_ = d == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(d));
+    block_.step = block_.is_arc() ? 0 : block_.feed;
+    state_ = State::kPrepare;
     return;
   }
   if (end_block_) state_ = State::kEnd;
   clear_block();
 }
 
-void GoldenTapeDecoder::arc_edge() {
-  const ArcPrepare::Result r = arc_.edge(block_.arc_words(), block_.feed);
+void GoldenTapeDecoder::prepare_edge() {
+  if (!block_.is_arc()) {  // a line: S = F << k, one doubling per clock
+    if (shifts_ == 0) {
+      state_ = State::kHold;
+    } else {
+      block_.step <<= 1;
+      --shifts_;
+    }
+    return;
+  }
+  const ArcPrepare::Result r = arc_.edge(block_.arc_words());
+  if (r.iterate)  // F once per dry-run iteration: S = F * N
+    block_.step = block_.step + block_.feed < kStepClamp ? block_.step + block_.feed : kStepClamp;
   if (!r.done) return;
   if (r.error != TapeError::kNone) {
     fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read
   } else {
-    block_.step = arc_.step();
     state_ = State::kHold;
   }
 }

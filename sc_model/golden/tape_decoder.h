@@ -24,7 +24,7 @@ struct DecodedBlock {
   bool dx_neg = false, dy_neg = false, i_neg = false, j_neg = false;
   uint64_t feed = 0;
   // The feed generator's step S = F * N (N iterations: 2^k for a line, the circle DDA's
-  // count for an arc); set when the block is held.
+  // count for an arc); summed while the block is prepared, final when it is held.
   uint64_t step = 0;
 
   bool is_arc() const { return motion != 1; }
@@ -36,19 +36,19 @@ struct DecodedBlock {
 class GoldenTapeDecoder {
  public:
   // Order matters: the states up to kComment watch tape_end (truncated tape).
-  enum class State : uint8_t { kLeader, kBody, kComment, kHold, kArc, kEnd, kError };
+  enum class State : uint8_t { kLeader, kBody, kComment, kHold, kPrepare, kEnd, kError };
 
   explicit GoldenTapeDecoder(const InterpConfig& cfg);
 
   void reset();
   // Nothing would change at this edge: tape_end unchanged and, holding a block, the buffer
   // full and no frame taken (a waiting frame stays waiting); otherwise no frame offered or
-  // waiting, no arc being prepared, and the tape not ending early. Most clocks of a line
+  // waiting, no block being prepared, and the tape not ending early. Most clocks of a line
   // program are spent holding the next block while the buffer is full.
   bool quiet(const InterpInputs& in, bool buffer_empty) const {
     if (in.tape_end != tape_end_q_) return false;
     if (state_ == State::kHold) return !buffer_empty && !(in.frame_valid && ready_);
-    return !in.frame_valid && !in_valid_ && state_ != State::kArc &&
+    return !in.frame_valid && !in_valid_ && state_ != State::kPrepare &&
            !(tape_end_q_ && state_ <= State::kComment);
   }
   // One rising edge. buffer_empty: the block buffer can take a held block at this edge
@@ -83,7 +83,7 @@ class GoldenTapeDecoder {
   bool end_word();
   bool commit_word(Word w);
   void end_of_block(uint32_t offset);
-  void arc_edge();
+  void prepare_edge();
   void handoff();
   void clear_block();
   void fail(TapeError code, uint32_t offset);
@@ -111,7 +111,9 @@ class GoldenTapeDecoder {
   // Block assembly (n, motion and feed are modal: never cleared at a block start).
   DecodedBlock block_;
   bool n_seen_ = false, any_word_ = false, motion_block_ = false, end_block_ = false;
-  // The arc block being prepared (kArc).
+  // The block being prepared (kPrepare): a line's doublings still to do (the RTL's
+  // shifts_q; S is block_.step), and an arc's checks and dry run.
+  unsigned shifts_ = 0;
   ArcPrepare arc_;
   // Error capture.
   TapeError err_code_ = TapeError::kNone;
