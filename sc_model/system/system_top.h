@@ -2,8 +2,9 @@
 // the engine's outputs every clock, controls the VCD window and stops the run.
 // Idea: one SystemC process (a thread) clocks the whole system as plain C++: per clock the
 // reader (FrameSource, the cosim's own) and the engine (engine.h) take one edge and the
-// monitor sees the outputs. SystemC time follows the clocks; outside a VCD window it is
-// advanced in one step per batch of clocks, so the scheduler costs nothing per clock.
+// monitor sees the outputs. SystemC time is not advanced clock by clock outside a VCD
+// window: it catches up when a window opens and at the end, so the scheduler costs nothing
+// per clock.
 // Inside a window the thread runs clock by clock, half a period at a time, and drives the
 // wave signals (interp_signals.h) that the golden engine's SystemC tracer records.
 // Clock and reset: the first rising edge (t = one period) is the reset edge, cycle 0;
