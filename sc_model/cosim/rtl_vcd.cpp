@@ -1,14 +1,13 @@
 // VCD window of the RTL (see rtl_vcd.h).
 #include "rtl_vcd.h"
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include "atomic_file.h"
 
 #include "Vinterp_top_trace.h"
 #include "frame_source.h"
+#include "vcd_time_base.h"
 #include "verilated_interp.h"
 #include "verilated_vcd_c.h"
 
@@ -30,15 +29,13 @@ void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, d
   rtl.model().trace(&vcd, 99);
   vcd.open(out.temp_path().c_str());
   if (!vcd.isOpen()) throw std::runtime_error(path + ": cannot open for writing");
-  const uint64_t period = std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / clock_hz)));
+  const uint64_t period = vcd_period_ps(clock_hz);
   FrameSource source(frames, options.cycles_per_frame);
   for (uint64_t cycle = 1; cycle <= last_cycle; ++cycle) {
     const bool ready = rtl.frame_ready();
     const bool dumping = cycle >= first_cycle;
     rtl.tick(source.inputs(), [&](int phase) {
-      // docs/waves.md time base: the reset edge (cycle 0) at one period, edge c at
-      // (c + 1) periods; clk low half a period before the edge.
-      if (dumping) vcd.dump((cycle + 1) * period - (phase == 0 ? period / 2 : 0));
+      if (dumping) vcd.dump(vcd_edge_ps(cycle, phase, period));
     });
     source.clock(ready);
   }

@@ -2,8 +2,6 @@
 // wrapper), stepped directly, and Verilator's own VCD tracer (VerilatedVcdC), opened on
 // demand. Without a VCD the model is the one built without tracing (Vinterp_top), which is
 // faster; with one it is Vinterp_top_trace.
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <type_traits>
 
@@ -11,6 +9,7 @@
 #include "Vinterp_top_trace.h"
 #include "engine.h"
 #include "verilated_interp.h"
+#include "vcd_time_base.h"
 #include "verilated_vcd_c.h"
 
 namespace ncinterp::system {
@@ -22,7 +21,7 @@ class RtlEngine : public Engine {
  public:
   RtlEngine(const InterpConfig& cfg, double clock_hz)
       : rtl_(cfg),
-        period_ps_(std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / clock_hz)))) {}
+        period_ps_(vcd_period_ps(clock_hz)) {}
   ~RtlEngine() override { close_vcd(); }
 
   void reset() override {
@@ -61,9 +60,8 @@ class RtlEngine : public Engine {
   }
 
  private:
-  // docs/waves.md time base: edge c at (c + 1) periods, clk low half a period before it.
   void dump(int phase) {
-    if (vcd_) vcd_->dump((cycle_ + 1) * period_ps_ - (phase == 0 ? period_ps_ / 2 : 0));
+    if (vcd_) vcd_->dump(vcd_edge_ps(cycle_, phase, period_ps_));
   }
 
   VerilatedInterp<Model> rtl_;

@@ -1,8 +1,7 @@
 // The SystemC system (see system_top.h).
 #include "system_top.h"
 
-#include <algorithm>
-#include <cmath>
+#include "vcd_time_base.h"
 
 namespace ncinterp::system {
 
@@ -11,7 +10,7 @@ SystemTop::SystemTop(sc_core::sc_module_name name, const SystemSetup& setup, Fra
     : sc_core::sc_module(name),
       setup_(setup),
       // In ps, SystemC's default time resolution and the VCDs' time unit.
-      period_ps_(std::max<uint64_t>(2, static_cast<uint64_t>(std::llround(1e12 / setup.clock_hz)))),
+      period_ps_(vcd_period_ps(setup.clock_hz)),
       source_(std::move(source)),
       engine_(setup.engine == EngineKind::kGolden
                   ? make_golden_engine(setup.config, waves_)
@@ -32,7 +31,8 @@ void SystemTop::finish() {
 }
 
 void SystemTop::catch_up() {
-  const sc_core::sc_time fall = sc_core::sc_time::from_value((cycle_ + 1) * period_ps_ + period_ps_ / 2);
+  // The fall after edge cycle_ is the clock-low half before edge cycle_ + 1.
+  const sc_core::sc_time fall = sc_core::sc_time::from_value(vcd_edge_ps(cycle_ + 1, 0, period_ps_));
   if (fall > sc_core::sc_time_stamp()) wait(fall - sc_core::sc_time_stamp());
 }
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace ncinterp::sweep {
 namespace {
@@ -93,9 +94,10 @@ std::vector<Recommendation> recommend(const std::vector<PointResult>& results, c
       continue;
     }
     auto better = [&](size_t i, size_t j) {  // i before j by the rule
-      for (const char* o : {"total_error_max_mm", "tape_frames", "ice40_logic_cells"}) {
+      const std::pair<const char*, double> rule[] = {  // objective, what counts as a tie
+          {"total_error_max_mm", kErrorTieMm}, {"tape_frames", 0.0}, {"ice40_logic_cells", 0.0}};
+      for (const auto& [o, tie] : rule) {
         const double a = *objective(results[i], o), c = *objective(results[j], o);
-        const double tie = std::string(o) == "total_error_max_mm" ? kErrorTieMm : 0.0;
         if (std::abs(a - c) > tie) return a < c;
       }
       // Then what the clock buys: the block times closest to 1/F.

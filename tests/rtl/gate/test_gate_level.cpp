@@ -12,19 +12,11 @@
 #include "Vinterp_top_gate.h"
 #include "frame_source.h"
 #include "interp_top.h"
+#include "tape.h"
 #include "verilated_interp.h"
 
 namespace ncinterp {
 namespace {
-
-std::vector<uint8_t> frames_of(const std::string& text) {
-  std::vector<uint8_t> frames;
-  for (char c : text) {
-    const uint8_t ch = static_cast<uint8_t>(c) & 0x7f;
-    frames.push_back(static_cast<uint8_t>(ch | (__builtin_parity(ch) ? 0x80 : 0)));
-  }
-  return frames;
-}
 
 // The first output port (interp_outputs.def) whose values differ.
 std::string first_difference(const InterpOutputs& g, const InterpOutputs& r) {
@@ -43,7 +35,7 @@ InterpOutputs play_in_lock_step(const std::string& text) {
   GoldenInterp golden(cfg);
   VerilatedInterp<Vinterp_top_gate> gate(cfg);
   golden.reset();
-  FrameSource source(frames_of(text), 1);
+  FrameSource source(tape::add_parity(text), 1);
   EXPECT_TRUE(gate.same_as(golden.outputs())) << "after reset";
   for (uint64_t cycle = 1; cycle < 200000; ++cycle) {
     const bool ready = golden.outputs().frame_ready;
