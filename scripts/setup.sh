@@ -14,6 +14,7 @@ packages=(
   iverilog                            # reference simulator for the benchmark
   gtkwave xvfb x11-apps               # waves; the screenshot of waves/interp.gtkw (xwd)
   parallel                            # ncinterp sweep's local runner (GNU parallel)
+  jq                                  # bench/sim/reader_gaps.sh reads cosim reports
 )
 missing=()
 for p in "${packages[@]}"; do
