@@ -12,8 +12,9 @@
 set -euo pipefail
 work=$1
 shift
+synth_options=$(grep -v '^#' "$(dirname "$0")/synth_ice40.options")
 mkdir -p "$work"
-yosys -q -p "read_verilog -sv $*; synth_ice40 -top interp_ice40_top; write_verilog -noattr $work/net.v" >/dev/null
+yosys -q -p "read_verilog -sv $*; synth_ice40 $synth_options -top interp_ice40_top; write_verilog -noattr $work/net.v" >/dev/null
 awk '
   /SB_LUT4 / { in_lut = 1 }
   in_lut && /\.O\(/ {

@@ -11,8 +11,9 @@
 set -euo pipefail
 work=$1 part=$2 package=$3 max_lc=$4 seed=$5
 shift 5
+synth_options=$(grep -v '^#' "$(dirname "$0")/synth_ice40.options")
 mkdir -p "$work"
-yosys -q -l "$work/yosys.log" -p "read_verilog -sv $*; synth_ice40 -top interp_ice40_top -json $work/top.json" >/dev/null
+yosys -q -l "$work/yosys.log" -p "read_verilog -sv $*; synth_ice40 $synth_options -top interp_ice40_top -json $work/top.json" >/dev/null
 status=0
 nextpnr-ice40 "--$part" --package "$package" --json "$work/top.json" --pcf-allow-unconstrained \
   --seed "$seed" --freq 100 --timing-allow-fail >"$work/nextpnr.log" 2>&1 || status=$?

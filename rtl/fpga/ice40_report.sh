@@ -13,8 +13,9 @@ set -euo pipefail
 work=$1 part=$2 package=$3 seeds=$4
 shift 4
 here=$(cd "$(dirname "$0")" && pwd)
+synth_options=$(grep -v '^#' "$here/synth_ice40.options")
 mkdir -p "$work"
-yosys -q -l "$work/modules.log" -p "read_verilog -sv $*; synth_ice40 -noflatten -top interp_ice40_top; stat" >/dev/null
+yosys -q -l "$work/modules.log" -p "read_verilog -sv $*; synth_ice40 $synth_options -noflatten -top interp_ice40_top; stat" >/dev/null
 # yosys prints every module's statistics twice (before and after the hierarchy summary):
 # each printing restarts the module's flip-flop sum. Counts are per module, not per instance.
 echo "| module | LUT4 | FF | carry |"

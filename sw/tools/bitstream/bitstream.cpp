@@ -26,8 +26,10 @@ std::string yosys_script(const BoardTarget& b, const std::string& json) {
   for (const char* f : build::kRtlSources) s += std::string(" \"") + f + "\"";
   for (const char* f : build::kBoardSources) s += std::string(" \"") + f + "\"";
   s += "; chparam -set LedActiveLow " + std::string(b.led_active_low ? "1" : "0") + " board_top";
-  // -abc9: yosys's timing-driven LUT mapping; on the UP5K it is what makes 12 MHz (docs/board.md).
-  s += "; synth_ice40 -abc9 " + std::string(b.dsp ? "-dsp " : "") + "-top board_top -json \"" + json + "\"";
+  // The project's synth_ice40 options (-abc9, timing-driven LUT mapping, is what makes 12 MHz
+  // on the UP5K, docs/board.md); -dsp where the part has multipliers.
+  s += "; synth_ice40 " + std::string(build::kSynthIce40Options) + (b.dsp ? " -dsp" : "") + " -top board_top -json \"" +
+       json + "\"";
   return s;
 }
 

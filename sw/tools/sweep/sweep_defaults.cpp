@@ -22,6 +22,7 @@ SynthesisSetup default_synthesis_setup(const std::string& cache_dir) {
   SynthesisSetup s;
   s.rtl_sources.assign(std::begin(build::kRtlSources), std::end(build::kRtlSources));
   s.fpga_top = std::string(build::kSweepSourceDir) + "/interp_fpga_top.sv";
+  s.synth_ice40_options = build::kSynthIce40Options;
   s.cache_dir = or_default(cache_dir) + "/synth";
   s.work_dir = or_default(cache_dir) + "/work";
   return s;

@@ -25,16 +25,18 @@ std::string chparams(const RtlParameters& params, const std::string& top) {
 }
 
 // interp_top with these parameters through a yosys synthesis command ("synth" or
-// "synth_ice40"), then stat.
+// "synth_ice40" with its options), then stat.
 std::string stat_script(const SynthesisSetup& s, const RtlParameters& p, const std::string& synth) {
   return read_sources(s.rtl_sources) + chparams(p, "interp_top") + synth + " -top interp_top; stat";
 }
 
+std::string synth_ice40(const SynthesisSetup& s) { return "synth_ice40 " + s.synth_ice40_options; }
+
 std::string harness_script(const SynthesisSetup& s, const RtlParameters& p, const std::string& json) {
   std::vector<std::string> files = s.rtl_sources;
   files.push_back(s.fpga_top);
-  return read_sources(files) + chparams(p, "interp_fpga_top") + "synth_ice40 -top interp_fpga_top -json \"" + json +
-         "\"";
+  return read_sources(files) + chparams(p, "interp_fpga_top") + synth_ice40(s) + " -top interp_fpga_top -json \"" +
+         json + "\"";
 }
 
 std::vector<std::string> pnr_command(const SynthesisSetup& s, const std::vector<std::string>& part,
@@ -103,7 +105,7 @@ std::string synthesis_key(const SynthesisSetup& s) {
   if (!s.small_part_name.empty())
     for (const std::string& a : pnr_command(s, s.small_part_args, "")) extra.push_back(a);
   for (const std::string& script :
-       {stat_script(s, {}, "synth"), stat_script(s, {}, "synth_ice40"), harness_script(s, {}, "")})
+       {stat_script(s, {}, "synth"), stat_script(s, {}, synth_ice40(s)), harness_script(s, {}, "")})
     extra.push_back(script);
   for (const std::string& tool : {s.yosys, s.nextpnr}) {
     const std::string log = s.work_dir + "/" + std::filesystem::path(tool).filename().string() + ".version";
@@ -147,7 +149,7 @@ SynthResult synthesize(const RtlParameters& w, const SynthesisSetup& s, const st
   // iCE40 LUTs of interp_top itself.
   {
     const std::string log = dir + "/yosys_synth_ice40.log";
-    const ProcessOutcome p = run_process({s.yosys, "-p", stat_script(s, w, "synth_ice40")}, log);
+    const ProcessOutcome p = run_process({s.yosys, "-p", stat_script(s, w, synth_ice40(s))}, log);
     cacheable &= completed(p);
     const std::optional<YosysStat> stat = p.ok() ? parse_yosys_stat(read_text_file(log)) : std::nullopt;
     r.ice40_luts = stat ? Measured::of(static_cast<double>(stat->count("SB_LUT4")))

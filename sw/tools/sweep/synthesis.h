@@ -20,6 +20,8 @@ struct SynthesisSetup {
   std::string fpga_top;                  // interp_fpga_top.sv
   std::string yosys = "yosys";
   std::string nextpnr = "nextpnr-ice40";
+  // Options of every synth_ice40 run (rtl/fpga/synth_ice40.options); empty: yosys's defaults.
+  std::string synth_ice40_options;
   std::string work_dir;                  // logs and netlists go to <work_dir>/w<W>/
   std::string cache_dir;                 // results per (hash, W); empty: no cache
   // The part nextpnr-ice40 places on: the HX8K in its CT256 package, 7680 logic cells.

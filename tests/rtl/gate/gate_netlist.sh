@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The interpolator as the iCE40 flow builds it, back as simulatable Verilog: yosys
-# synth_ice40 maps rtl/*.sv (top interp_top, default parameters) to SB_LUT4 / SB_CARRY /
-# SB_DFF* cells, then a second yosys run flattens those cells' own simulation models
+# synth_ice40, with the project's options (rtl/fpga/synth_ice40.options), maps rtl/*.sv
+# (top interp_top, default parameters) to SB_LUT4 / SB_CARRY / SB_DFF* cells, then a second yosys run flattens those cells' own simulation models
 # (yosys's ice40/cells_sim.v) into the netlist, which Verilator then compiles.
 # Idea: a test of the RTL cannot see what synthesis does with it. Don't-care values ('x)
 # are the case in point: Verilator picks 0 for them, yosys whatever saves logic, so a 'x on
@@ -14,7 +14,9 @@ out=$1
 shift
 cells=$(dirname "$(command -v yosys)")/../share/yosys/ice40/cells_sim.v
 mapped="$out.ice40.v"
-yosys -q -p "read_verilog -sv $*; synth_ice40 -top interp_top; write_verilog -noattr $mapped" >/dev/null
+# The project's synth_ice40 options: the netlist tested here is the one the boards get.
+synth_options=$(grep -v '^#' "$(dirname "$0")/../../../rtl/fpga/synth_ice40.options")
+yosys -q -p "read_verilog -sv $*; synth_ice40 $synth_options -top interp_top; write_verilog -noattr $mapped" >/dev/null
 # ICE40_HX: the HX family's cell timing branch; the models' logic does not depend on it.
 yosys -q -p "read_verilog $mapped; read_verilog -D ICE40_HX $cells; hierarchy -top interp_top;
              proc; flatten; opt_clean; write_verilog -noattr $out.tmp" 2>/dev/null
