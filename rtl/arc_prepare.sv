@@ -67,7 +67,7 @@ module arc_prepare #(
 
   dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
     .clk_i, .rst_ni,
-    .load_i(start), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i),
+    .load_i(start), .line_i(1'b0), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i),
     .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
     .strobe_i(running_q),
     .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),

@@ -1,4 +1,5 @@
-// Circle DDA of one quadrant arc: two cross-coupled integrators with immediate update.
+// Circle DDA: two cross-coupled integrators with immediate update, which play a quadrant
+// arc, and a line as the case where the integrands do not move.
 //
 // What (docs/circle-dda.md): coordinates are magnitudes relative to the arc's centre. The X
 // integrator adds |y| and the Y integrator adds |x| at every iteration (modulus 2^k, k =
@@ -11,6 +12,12 @@
 // when both are 0 (done_o). The golden twin is sc_model/golden/dda_circle.h (which keeps
 // the axes by name and a y_first flag; here they are kept by role, see below: the same
 // values, one multiplexer layer less).
+// A line (line_i at the load; method L1 of docs/interpolator.md) runs on the same
+// integrators: each adds its own axis's |d| at every iteration for exactly 2^k iterations
+// (rem_q), and its carries are the steps. The magnitudes then hold the increments and never
+// move; since an integrator adds the other axis's magnitude register, that register holds
+// this axis's |d| (mag_x = |dy|, mag_y = |dx|). One pair of integrators for both motions,
+// as in the interpolators of the 1960s, instead of a line DDA beside the circle DDA.
 // Timing: load_i loads the block at an edge where no iteration happens; an iteration
 // happens at an edge with strobe_i while !done_o and its pulses show after that edge.
 // The next-state logic is evaluated only at a load, an iteration or to clear the step
@@ -24,12 +31,13 @@ module dda_circle #(
   input  logic                rst_ni,
   // The loading block's geometry (arc_geometry.sv).
   input  logic                load_i,
+  input  logic                line_i,     // the loading block is a line (else an arc)
   input  logic [KWidth-1:0]   k_i,
-  input  logic [IncWidth-1:0] x_i,        // |x| of the start, relative to the centre
-  input  logic [IncWidth-1:0] y_i,        // |y| of the start
+  input  logic [IncWidth-1:0] x_i,        // |x| of the start, relative to the centre (arc)
+  input  logic [IncWidth-1:0] y_i,        // |y| of the start (arc)
   input  logic [IncWidth-1:0] cnt_x_i,    // |dx|: X pulses of the block
   input  logic [IncWidth-1:0] cnt_y_i,    // |dy|
-  input  logic                grow_x_i,   // |x| grows along the arc
+  input  logic                grow_x_i,   // |x| grows along the arc (arc)
   input  logic                grow_y_i,
   input  logic                dir_x_i,    // 1 = plus
   input  logic                dir_y_i,
@@ -52,11 +60,15 @@ module dda_circle #(
   // acc_*_q: the integrators, in [0, 2^k), half at the load (rounding to nearest).
   // mag_*_q: |a|, |b| relative to the centre. cnt_*_q: pulses left. grow_*_q: the
   // magnitude grows at that axis's steps (fixed for the block).
+  // line_q: the block is a line (frozen magnitudes); rem_q: a line's iterations left, 2^k at
+  // the load (an arc's end is its pulse counters').
   logic [IncWidth:0]   kpow_q, kpow_d;
   logic [IncWidth-1:0] acc_a_q, acc_a_d, acc_b_q, acc_b_d;
   logic [IncWidth-1:0] mag_a_q, mag_a_d, mag_b_q, mag_b_d;
   logic [IncWidth-1:0] cnt_a_q, cnt_a_d, cnt_b_q, cnt_b_d;
   logic                grow_a_q, grow_a_d, grow_b_q, grow_b_d, a_is_y_q, a_is_y_d;
+  logic                line_q, line_d;
+  logic [IncWidth:0]   rem_q, rem_d;
   // dir_*_q: step direction per axis, held for the block. step_*_q: the one-clock pulses.
   logic                dir_x_q, dir_x_d, dir_y_q, dir_y_d;
   logic                step_x_q, step_x_d, step_y_q, step_y_d;
@@ -66,9 +78,11 @@ module dda_circle #(
   // magnitude grows along the arc, else down) and uses one of A's remaining pulses. When b
   // has no pulses left, bit k-1 of the addend is forced on (at least half a step per
   // iteration), so A's last pulses come out even where |b| is 0 (an arc ending on an
-  // axis). An axis with no pulses left never steps. Result: {step, acc, mag, cnt}.
+  // axis). An axis with no pulses left never steps. In a line both rules are idle: the
+  // magnitudes are constants and the integrators independent. Result: {step, acc, mag, cnt}.
   localparam int HalfWidth = 1 + 3 * IncWidth;
   function automatic logic [HalfWidth-1:0] half_step(
+      input logic                line,        // a line: the magnitudes do not move
       input logic [IncWidth:0]   kpow,        // 2^k (one-hot)
       input logic [IncWidth-1:0] acc,         // A's integrator, < 2^k
       input logic [IncWidth-1:0] other_mag,   // |b|, < 2^k
@@ -80,14 +94,14 @@ module dda_circle #(
     logic                step;
     logic [IncWidth-1:0] acc_new, mag_new, cnt_new;
     addend = {1'b0, other_mag};
-    if (other_done) addend = addend | (kpow >> 1);
+    if (other_done && !line) addend = addend | (kpow >> 1);
     sum     = {1'b0, acc} + addend;  // < 2^(k+1)
     step    = |(sum & kpow) && cnt != '0;
     acc_new = sum[IncWidth-1:0] & ~kpow[IncWidth-1:0];  // clearing bit k subtracts 2^k
     mag_new = mag;
     cnt_new = cnt;
     if (step) begin
-      mag_new = grow ? mag + 1'b1 : mag - 1'b1;
+      if (!line) mag_new = grow ? mag + 1'b1 : mag - 1'b1;
       cnt_new = cnt - 1'b1;
     end
     half_step = {step, acc_new, mag_new, cnt_new};
@@ -110,7 +124,7 @@ module dda_circle #(
     // verilated model skips it and synthesis needs no gate for it.
     {step_x_d, step_y_d, carry_x_o, carry_y_o} = '0;
     {kpow_d, acc_a_d, acc_b_d, mag_a_d, mag_b_d, cnt_a_d, cnt_b_d, grow_a_d, grow_b_d,
-     a_is_y_d, dir_x_d, dir_y_d, first_step, first_acc, first_mag, first_cnt, second_step,
+     a_is_y_d, line_d, rem_d, dir_x_d, dir_y_d, first_step, first_acc, first_mag, first_cnt, second_step,
      second_acc, second_mag, second_cnt} = 'x;
     if (active) begin
       kpow_d   = kpow_q;
@@ -119,27 +133,33 @@ module dda_circle #(
       cnt_a_d  = cnt_a_q;   cnt_b_d  = cnt_b_q;
       grow_a_d = grow_a_q;  grow_b_d = grow_b_q;
       a_is_y_d = a_is_y_q;
+      line_d   = line_q;    rem_d    = rem_q;
       dir_x_d  = dir_x_q;   dir_y_d  = dir_y_q;
       if (load_i) begin
         // X goes first in the first iteration: A = X, B = Y.
         kpow_d   = kpow_load;
         acc_a_d  = kpow_load[IncWidth:1];
         acc_b_d  = kpow_load[IncWidth:1];
-        mag_a_d  = x_i;       mag_b_d  = y_i;
+        // A line's magnitude registers hold the other axis's |d| (see the header).
+        mag_a_d  = line_i ? cnt_y_i : x_i;
+        mag_b_d  = line_i ? cnt_x_i : y_i;
         cnt_a_d  = cnt_x_i;   cnt_b_d  = cnt_y_i;
         grow_a_d = grow_x_i;  grow_b_d = grow_y_i;
         a_is_y_d = 1'b0;
+        line_d   = line_i;
+        rem_d    = kpow_load;
         dir_x_d  = dir_x_i;   dir_y_d  = dir_y_i;
       end else if (iterate) begin
         {first_step, first_acc, first_mag, first_cnt} =
-            half_step(kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0, mag_a_q, grow_a_q, cnt_a_q);
+            half_step(line_q, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0, mag_a_q, grow_a_q, cnt_a_q);
         {second_step, second_acc, second_mag, second_cnt} =
-            half_step(kpow_q, acc_b_q, first_mag, first_cnt == '0, mag_b_q, grow_b_q, cnt_b_q);
+            half_step(line_q, kpow_q, acc_b_q, first_mag, first_cnt == '0, mag_b_q, grow_b_q, cnt_b_q);
         // Swap the roles: B went second, so it goes first in the next iteration.
         acc_a_d  = second_acc;  mag_a_d  = second_mag;  cnt_a_d  = second_cnt;
         acc_b_d  = first_acc;   mag_b_d  = first_mag;   cnt_b_d  = first_cnt;
         grow_a_d = grow_b_q;    grow_b_d = grow_a_q;
         a_is_y_d = !a_is_y_q;
+        rem_d    = rem_q - 1'b1;  // counts for a line only (done_o)
         carry_x_o = a_is_y_q ? second_step : first_step;
         carry_y_o = a_is_y_q ? first_step : second_step;
         step_x_d  = carry_x_o;
@@ -156,6 +176,8 @@ module dda_circle #(
       cnt_a_q  <= '0;  cnt_b_q  <= '0;
       grow_a_q <= 1'b0;  grow_b_q <= 1'b0;
       a_is_y_q <= 1'b0;
+      line_q   <= 1'b0;
+      rem_q    <= '0;
       dir_x_q  <= 1'b0;  dir_y_q  <= 1'b0;
       step_x_q <= 1'b0;  step_y_q <= 1'b0;
     end else if (active) begin
@@ -165,6 +187,8 @@ module dda_circle #(
       cnt_a_q  <= cnt_a_d;   cnt_b_q  <= cnt_b_d;
       grow_a_q <= grow_a_d;  grow_b_q <= grow_b_d;
       a_is_y_q <= a_is_y_d;
+      line_q   <= line_d;
+      rem_q    <= rem_d;
       dir_x_q  <= dir_x_d;   dir_y_q  <= dir_y_d;
       step_x_q <= step_x_d;  step_y_q <= step_y_d;
     end
@@ -185,6 +209,8 @@ module dda_circle #(
   assign step_y_o = step_y_q;
   assign dir_x_o  = dir_x_q;
   assign dir_y_o  = dir_y_q;
-  assign done_o   = cnt_a_q == '0 && cnt_b_q == '0;
+  // An arc ends with its last pulse, a line after its 2^k iterations (its last pulse may come
+  // one iteration earlier, and the feed step S = F 2^k is timed for all of them).
+  assign done_o   = line_q ? rem_q == '0 : cnt_a_q == '0 && cnt_b_q == '0;
 
 endmodule

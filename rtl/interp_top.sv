@@ -2,13 +2,13 @@
 // pulses.
 //
 // What: tape_decoder (with arc_prepare) -> block_buffer ("next" block) -> player
-// (feed_generator + dda_line for G01, dda_circle for G02/G03) -> position counters, plus
-// the machine status. Ports and parameters are the contract
+// (feed_generator + dda_circle, which plays G01 lines and G02/G03 arcs) -> position
+// counters, plus the machine status. Ports and parameters are the contract
 // of docs/architecture.md; the microarchitecture and the clock-by-clock timing are in
 // docs/interpolator.md, which the golden model (sc_model/golden/) follows too. The golden
 // twin is GoldenInterp (sc_model/golden/interp_top.h); its tick() holds the twins of
-// block_buffer.sv, feed_generator.sv, dda_line.sv + dda_integrator.sv and
-// position_counter.sv as named sections, and this module's status logic.
+// block_buffer.sv, feed_generator.sv and position_counter.sv as named sections, and this
+// module's status logic; CircleDda (sc_model/golden/dda_circle.h) is dda_circle.sv's.
 // Timing: every output is a register or a function of registers (Moore). A block loads at
 // an edge where the buffer holds one and the player is idle or in the finishing clock of
 // the previous block, so blocks follow without gap clocks when the reader keeps up. An
@@ -112,16 +112,10 @@ module interp_top #(
   logic [KWidth-1:0]      next_k;
   logic                   next_grow_x, next_grow_y, next_arc;
 
-  // Player: one DDA per motion; the idle one has no iterations left and emits nothing.
+  // Player: the feed generator's strobes iterate the DDA; its carries count the positions.
+  // finished: the playing block's iterations are over (the DDA's done).
   logic              load, strobe, finished, saturated;
-  logic              line_idle, line_carry_x, line_carry_y, line_step_x, line_step_y;
-  logic              line_dir_x, line_dir_y;
-  logic              circle_idle, circle_carry_x, circle_carry_y, circle_step_x, circle_step_y;
-  logic              circle_dir_x, circle_dir_y;
   logic              carry_x, carry_y;
-  // arc_q: the playing (or last played) block is an arc: the dir outputs come from the
-  // circle DDA.
-  logic              arc_q, arc_d;
 
   // busy_q: a block is loaded and not finished. block_n_q: its N (the last one when idle).
   // done_q / error_q: the machine has stopped at the end of the program / on a tape error.
@@ -178,8 +172,6 @@ module interp_top #(
   assign next_grow_y = next_block.grow_y;
   assign next_arc = next_motion != interp_pkg::MotionLine;
 
-  // The playing block's iterations are over when both DDAs are idle (only one was loaded).
-  assign finished = line_idle && circle_idle;
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || finished);
 
@@ -190,36 +182,18 @@ module interp_top #(
     .strobe_o(strobe), .saturated_o(saturated)
   );
 
-  // Both DDAs see every strobe; an idle one ignores it.
-  dda_line #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dda (
-    .clk_i, .rst_ni,
-    .load_i(load && !next_arc), .k_i(next_k),
-    .dx_i(next_dx), .dx_neg_i(next_dx_neg), .dy_i(next_dy), .dy_neg_i(next_dy_neg),
-    .strobe_i(strobe),
-    .carry_x_o(line_carry_x), .carry_y_o(line_carry_y),
-    .step_x_o(line_step_x), .dir_x_o(line_dir_x), .step_y_o(line_step_y), .dir_y_o(line_dir_y),
-    .rem_zero_o(line_idle)
-  );
-
-  // The arc's start about its centre is (-I, -J): its magnitudes are |I|, |J|.
+  // A line's magnitudes are its increments; an arc's start about its centre is (-I, -J):
+  // its magnitudes are |I|, |J|.
   dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_circle (
     .clk_i, .rst_ni,
-    .load_i(load && next_arc), .k_i(next_k), .x_i(next_i), .y_i(next_j),
+    .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_i(next_i), .y_i(next_j),
     .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
     .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
     .strobe_i(strobe),
-    .carry_x_o(circle_carry_x), .carry_y_o(circle_carry_y),
-    .step_x_o(circle_step_x), .dir_x_o(circle_dir_x),
-    .step_y_o(circle_step_y), .dir_y_o(circle_dir_y),
-    .done_o(circle_idle)
+    .carry_x_o(carry_x), .carry_y_o(carry_y),
+    .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
+    .done_o(finished)
   );
-
-  assign carry_x  = line_carry_x | circle_carry_x;
-  assign carry_y  = line_carry_y | circle_carry_y;
-  assign step_x_o = line_step_x | circle_step_x;
-  assign step_y_o = line_step_y | circle_step_y;
-  assign dir_x_o  = arc_q ? circle_dir_x : line_dir_x;
-  assign dir_y_o  = arc_q ? circle_dir_y : line_dir_y;
 
   position_counter #(.PosWidth(PosWidth)) u_pos_x (
     .clk_i, .rst_ni, .count_i(carry_x), .up_i(dir_x_o), .pos_o(pos_x_o)
@@ -233,11 +207,9 @@ module interp_top #(
   always_comb begin
     busy_d    = busy_q;
     block_n_d = block_n_q;
-    arc_d     = arc_q;
     if (load) begin
       busy_d    = 1'b1;
       block_n_d = next_n;
-      arc_d     = next_arc;
     end else if (busy_q && finished) begin
       busy_d = 1'b0;  // finished with no next block: a gap (or the end)
     end
@@ -249,13 +221,11 @@ module interp_top #(
     if (!rst_ni) begin
       busy_q    <= 1'b0;
       block_n_q <= '0;
-      arc_q     <= 1'b0;
       done_q    <= 1'b0;
       error_q   <= 1'b0;
     end else begin
       busy_q    <= busy_d;
       block_n_q <= block_n_d;
-      arc_q     <= arc_d;
       done_q    <= done_d;
       error_q   <= error_d;
     end

@@ -1,4 +1,5 @@
-// Circle DDA of one quadrant arc: the C++ twin of rtl/dda_circle.sv (the same values every
+// Circle DDA of one quadrant arc, which also plays a line: the C++ twin of rtl/dda_circle.sv
+// (the same values every
 // clock; the RTL keeps the two axes by role, A = first in the next iteration, and swaps
 // them after each iteration, this model keeps them by name with y_first_ = a_is_y_q; the
 // one-clock step registers are the caller's outputs, as in GoldenInterp).
@@ -13,6 +14,9 @@
 // the circle (measured, bench/circle). Per-axis pulse counters stop each axis exactly at
 // the programmed end; an axis whose partner has finished integrates at least 2^(k-1) per
 // iteration, so its last pulses come out even where the other coordinate is 0.
+// A line (load_line) runs on the same integrators with constant integrands: each adds its
+// own axis's |d| for exactly 2^k iterations (method L1), so a magnitude register holds the
+// other axis's |d| and never moves, and the block ends after the 2^k-th iteration.
 #pragma once
 #include <cstdint>
 
@@ -33,9 +37,11 @@ class CircleDda {
     bool x = false, y = false;
   };
 
-  // Registers after a load edge.
+  // Registers after a load edge of an arc.
   void load(const ArcGeometry& g, bool dir_x, bool dir_y) {
+    line_ = false;
     kpow_ = uint64_t{1} << g.k;
+    rem_ = kpow_;
     acc_[0] = acc_[1] = kpow_ >> 1;
     mag_[0] = g.x0;
     mag_[1] = g.y0;
@@ -43,6 +49,23 @@ class CircleDda {
     cnt_[1] = g.cnt_y;
     grow_[0] = g.grow_x;
     grow_[1] = g.grow_y;
+    dir_[0] = dir_x;
+    dir_[1] = dir_y;
+    y_first_ = false;
+  }
+
+  // Registers after a load edge of a line of |dx|, |dy| with k = bit length of
+  // max(|dx|, |dy|) (the decoder's k): the magnitude registers hold the other axis's |d|.
+  void load_line(unsigned k, uint32_t dx, uint32_t dy, bool dir_x, bool dir_y) {
+    line_ = true;
+    kpow_ = uint64_t{1} << k;
+    rem_ = kpow_;
+    acc_[0] = acc_[1] = kpow_ >> 1;
+    mag_[0] = dy;
+    mag_[1] = dx;
+    cnt_[0] = dx;
+    cnt_[1] = dy;
+    grow_[0] = grow_[1] = false;
     dir_[0] = dir_x;
     dir_[1] = dir_y;
     y_first_ = false;
@@ -56,11 +79,13 @@ class CircleDda {
     step[first] = half_step(first);
     step[second] = half_step(second);  // sees the first axis's new magnitude and count
     y_first_ = !y_first_;
+    --rem_;  // counts for a line only
     return Steps{step[0], step[1]};
   }
 
-  // Both axes have emitted all their pulses: the block's iterations are over.
-  bool done() const { return cnt_[0] == 0 && cnt_[1] == 0; }
+  // The block's iterations are over: a line's 2^k, an arc's when both axes have emitted all
+  // their pulses.
+  bool done() const { return line_ ? rem_ == 0 : cnt_[0] == 0 && cnt_[1] == 0; }
   bool dir(int axis) const { return dir_[axis]; }
 
   // Register access for tests, the bench and the golden model's fault hook.
@@ -75,13 +100,13 @@ class CircleDda {
   // Axis a integrates the other axis's magnitude; a carry out of bit k is a step.
   bool half_step(int a) {
     const int b = 1 - a;
-    const uint64_t addend = cnt_[b] == 0 ? (mag_[b] | (kpow_ >> 1)) : mag_[b];
+    const uint64_t addend = cnt_[b] == 0 && !line_ ? (mag_[b] | (kpow_ >> 1)) : mag_[b];
     const uint64_t sum = acc_[a] + addend;  // < 2^(k+1)
     acc_[a] = sum & ~kpow_;
     const bool step = (sum & kpow_) != 0 && cnt_[a] != 0;
     if (step) {
       --cnt_[a];
-      mag_[a] = grow_[a] ? mag_[a] + 1 : mag_[a] - 1;
+      if (!line_) mag_[a] = grow_[a] ? mag_[a] + 1 : mag_[a] - 1;
     }
     return step;
   }
@@ -94,6 +119,8 @@ class CircleDda {
   bool grow_[2] = {false, false};
   bool dir_[2] = {false, false};  // 1 = plus, held for the block
   bool y_first_ = false;        // this iteration steps Y before X
+  bool line_ = false;           // a line: constant magnitudes, 2^k iterations
+  uint64_t rem_ = 0;            // a line's iterations left
 };
 
 }  // namespace ncinterp

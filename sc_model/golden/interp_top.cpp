@@ -44,10 +44,7 @@ void GoldenInterp::reset() {
   next_valid_ = false;
   feed_step_ = phase_ = 0;
   saturated_ = false;
-  kpow_ = rem_ = 0;
-  acc_[0] = acc_[1] = inc_[0] = inc_[1] = 0;
   dir_[0] = dir_[1] = false;
-  arc_ = false;
   circle_ = CircleDda{};
   out_ = InterpOutputs{};
   out_.frame_ready = decoder_.ready();
@@ -59,17 +56,12 @@ void GoldenInterp::reset() {
 
 void GoldenInterp::load_block() {
   const DecodedBlock& b = next_;
-  arc_ = b.is_arc();
-  if (arc_) {
+  if (b.is_arc()) {
     // The decoder has checked the arc; the geometry gives the circle DDA's start.
     circle_.load(arc_geometry(b.arc_words(), cfg_.inc_width), !b.dx_neg, !b.dy_neg);
   } else {
     // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
-    kpow_ = uint64_t{1} << bit_length(b.dx | b.dy);
-    rem_ = kpow_;
-    acc_[0] = acc_[1] = kpow_ >> 1;
-    inc_[0] = b.dx;
-    inc_[1] = b.dy;
+    circle_.load_line(bit_length(b.dx | b.dy), b.dx, b.dy, !b.dx_neg, !b.dy_neg);
   }
   dir_[0] = !b.dx_neg;
   dir_[1] = !b.dy_neg;
@@ -149,8 +141,7 @@ void GoldenInterp::fault_edge() {
         break;
       case Fault::kAccumulatorOffByOne:
         if (!out_.busy) break;
-        if (arc_) circle_.add_to_integrator(a, 1);
-        else acc_[a] += 1;
+        circle_.add_to_integrator(a, 1);
         again = false;
         break;
       case Fault::kWrongDirection:

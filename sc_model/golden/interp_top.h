@@ -1,8 +1,8 @@
 // Golden cycle model of the interpolator: the C++ twin of rtl/interp_top.sv. Twins of the
-// submodules: GoldenTapeDecoder (rtl/tape_decoder.sv), CircleDda (rtl/dda_circle.sv); the
-// small ones are sections of tick() named after them: "Block buffer" (block_buffer.sv),
-// "Feed generator" (feed_generator.sv), "Line DDA" (dda_line.sv, dda_integrator.sv),
-// "Position counters" (position_counter.sv).
+// submodules: GoldenTapeDecoder (rtl/tape_decoder.sv), CircleDda (rtl/dda_circle.sv, which
+// plays lines and arcs); the small ones are sections of tick() named after them: "Block
+// buffer" (block_buffer.sv), "Feed generator" (feed_generator.sv), "Position counters"
+// (position_counter.sv).
 // Idea: one tick() is one rising clock edge. Every register of the RTL exists here with the
 // same reset value and next-state rule (docs/interpolator.md), so after each tick the
 // outputs equal the RTL's outputs after the same edge; the cosim checks this every clock.
@@ -67,17 +67,11 @@ class GoldenInterp {
   // Block buffer ("next" register).
   DecodedBlock next_;
   bool next_valid_ = false;
-  // Player: feed generator, line DDA and circle DDA (arc_: the block is an arc).
+  // Player: feed generator and the DDA (lines and arcs).
   uint64_t feed_step_ = 0;  // S = F * N
   uint64_t phase_ = 0;
   bool saturated_ = false;
-  // 64 bits: k goes up to IncWidth = 32, so 2^k and acc + inc need IncWidth + 1 bits.
-  uint64_t kpow_ = 0;       // 2^k, one-hot
-  uint64_t rem_ = 0;        // DDA iterations left in the block
-  uint64_t acc_[2] = {0, 0};
-  uint64_t inc_[2] = {0, 0};
   bool dir_[2] = {false, false};
-  bool arc_ = false;
   CircleDda circle_;
   // Outputs: the output registers themselves.
   InterpOutputs out_;
@@ -98,7 +92,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   // values): they are taken first, then the player, the buffer and the decoder update.
   using State = GoldenTapeDecoder::State;
   const bool busy = out_.busy;
-  const bool finishing = busy && rem_ == 0 && circle_.done();  // the idle DDA is done too
+  const bool finishing = busy && circle_.done();
   const bool buffer_empty = !next_valid_;
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
@@ -116,19 +110,8 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
       phase_ = strobe ? p - modulus_ : p;
     }
     if (strobe) {
-      bool carry[2];
-      if (arc_) {
-        const CircleDda::Steps s = circle_.iterate();
-        carry[0] = s.x, carry[1] = s.y;
-      } else {
-        // Line DDA (rtl/dda_line.sv, dda_integrator.sv).
-        --rem_;
-        for (int a = 0; a < 2; ++a) {
-          const uint64_t sum = acc_[a] + inc_[a];
-          carry[a] = (sum & kpow_) != 0;
-          acc_[a] = sum & ~kpow_;
-        }
-      }
+      const CircleDda::Steps s = circle_.iterate();
+      const bool carry[2] = {s.x, s.y};
       // Position counters (rtl/position_counter.sv).
       if (carry[0]) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
       if (carry[1]) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));

@@ -151,7 +151,8 @@ TEST(CosimScoreboard, ReportsAnInjectedFaultAtItsCycleAndBlock) {
 }
 
 TEST(CosimScoreboard, AccumulatorFaultShowsUpLaterInThePulses) {
-  const std::vector<uint8_t> frames = frames_of(test::line_tape_text({{5, 1, 0, 2000000}}));
+  // dx = 3 BLU (k = 2): one more LSB at the load moves the third pulse one iteration earlier.
+  const std::vector<uint8_t> frames = frames_of(test::line_tape_text({{5, 3, 0, 2000000}}));
   OutputRecorder clean;
   ASSERT_EQ(run(frames, fast_options(), clean).end, Result::End::kDone);
   Options o = fast_options();

@@ -327,14 +327,17 @@ TEST(GoldenFault, StuckStepHoldsTheStepForTheRestOfTheBlock) {
                                                clean.outs[c - 1].pos_y);
 }
 
-TEST(GoldenFault, AccumulatorOffByOneAddsAPulseToAOneStepMove) {
-  const std::string text = "%\nN1 G01 X0.001 F1000.000\nM02\n%\n";  // k = 1: acc 1, inc 1
+TEST(GoldenFault, AccumulatorOffByOneMovesAPulseEarlierAndTheCountersKeepTheCount) {
+  // k = 2, inc 3, acc from 2: carries at iterations 1, 2 and 4; from 3 (the fault at the
+  // load edge): 1, 2 and 3, and the 4th iteration's carry never comes (the block still
+  // ends after its 4 iterations with 3 pulses: the pulse counter caps the count).
+  const std::string text = "%\nN1 G01 X0.003 F1000.000\nM02\n%\n";
   const FaultRun clean = run_with_fault(text, {});
   const uint64_t start = clean.rec.starts.at(0).cycle;
   const FaultRun faulty =
       run_with_fault(text, {GoldenInterp::Fault::kAccumulatorOffByOne, start, 0});
-  EXPECT_EQ(clean.rec.last.pos_x, 1);
-  EXPECT_EQ(faulty.rec.last.pos_x, 2);
+  EXPECT_EQ(clean.rec.last.pos_x, 3);
+  EXPECT_EQ(faulty.rec.last.pos_x, 3);
   EXPECT_GT(first_difference(clean, faulty), start);
 }
 
