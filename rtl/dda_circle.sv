@@ -124,8 +124,8 @@ module dda_circle #(
     // verilated model skips it and synthesis needs no gate for it.
     {step_x_d, step_y_d, carry_x_o, carry_y_o} = '0;
     {kpow_d, acc_a_d, acc_b_d, mag_a_d, mag_b_d, cnt_a_d, cnt_b_d, grow_a_d, grow_b_d,
-     a_is_y_d, line_d, rem_d, dir_x_d, dir_y_d, first_step, first_acc, first_mag, first_cnt, second_step,
-     second_acc, second_mag, second_cnt} = 'x;
+     a_is_y_d, line_d, rem_d, dir_x_d, dir_y_d, first_step, first_acc, first_mag, first_cnt,
+     second_step, second_acc, second_mag, second_cnt} = 'x;
     if (active) begin
       kpow_d   = kpow_q;
       acc_a_d  = acc_a_q;   acc_b_d  = acc_b_q;
@@ -150,10 +150,10 @@ module dda_circle #(
         rem_d    = kpow_load;
         dir_x_d  = dir_x_i;   dir_y_d  = dir_y_i;
       end else if (iterate) begin
-        {first_step, first_acc, first_mag, first_cnt} =
-            half_step(line_q, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0, mag_a_q, grow_a_q, cnt_a_q);
-        {second_step, second_acc, second_mag, second_cnt} =
-            half_step(line_q, kpow_q, acc_b_q, first_mag, first_cnt == '0, mag_b_q, grow_b_q, cnt_b_q);
+        {first_step, first_acc, first_mag, first_cnt} = half_step(
+            line_q, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0, mag_a_q, grow_a_q, cnt_a_q);
+        {second_step, second_acc, second_mag, second_cnt} = half_step(
+            line_q, kpow_q, acc_b_q, first_mag, first_cnt == '0, mag_b_q, grow_b_q, cnt_b_q);
         // Swap the roles: B went second, so it goes first in the next iteration.
         acc_a_d  = second_acc;  mag_a_d  = second_mag;  cnt_a_d  = second_cnt;
         acc_b_d  = first_acc;   mag_b_d  = first_mag;   cnt_b_d  = first_cnt;

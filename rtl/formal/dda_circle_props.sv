@@ -1,4 +1,5 @@
-// Formal harness of the circle DDA (rtl/dda_circle.sv), docs/circle-dda.md.
+// Formal harness of the circle DDA (rtl/dda_circle.sv) playing arcs, docs/circle-dda.md
+// (lines on the same module: dda_line_props.sv).
 //
 // What is proven, for every quadrant arc the decoder accepts at width W (exhaustively: the
 // arc's words are free, BMC covers the whole block):
@@ -64,7 +65,7 @@ module dda_circle_props #(
 
   logic carry_x, carry_y, step_x, step_y, dir_x, dir_y, done;
   dda_circle #(.IncWidth(W), .KWidth(KWidth)) u_dut (
-    .clk_i, .rst_ni, .load_i(load), .k_i(k), .x_i(i_i), .y_i(j_i),
+    .clk_i, .rst_ni, .load_i(load), .line_i(1'b0), .k_i(k), .x_i(i_i), .y_i(j_i),
     .cnt_x_i(dx_i), .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y),
     .dir_x_i(!dx_neg_i), .dir_y_i(!dy_neg_i), .strobe_i(strobe),
     .carry_x_o(carry_x), .carry_y_o(carry_y), .step_x_o(step_x), .dir_x_o(dir_x),
