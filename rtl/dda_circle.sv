@@ -91,19 +91,18 @@ module dda_circle #(
       input logic                grow,        // |a| grows at A's steps
       input logic [IncWidth-1:0] cnt);        // A's pulses left
     logic [IncWidth:0]   addend, sum;
-    logic                step;
+    logic                step, move;
     logic [IncWidth-1:0] acc_new, mag_new, cnt_new;
     addend = {1'b0, other_mag};
     if (other_done && !line) addend = addend | (kpow >> 1);
     sum     = {1'b0, acc} + addend;  // < 2^(k+1)
     step    = |(sum & kpow) && cnt != '0;
     acc_new = sum[IncWidth-1:0] & ~kpow[IncWidth-1:0];  // clearing bit k subtracts 2^k
-    mag_new = mag;
-    cnt_new = cnt;
-    if (step) begin
-      if (!line) mag_new = grow ? mag + 1'b1 : mag - 1'b1;
-      cnt_new = cnt - 1'b1;
-    end
+    // One adder each (no multiplexer after two adders): the magnitude moves by +1, by -1
+    // (all ones) or not at all, the pulse counter by -1 or not at all.
+    move    = step && !line;
+    mag_new = mag + {{(IncWidth - 1){move && !grow}}, move};
+    cnt_new = cnt - IncWidth'(step);
     half_step = {step, acc_new, mag_new, cnt_new};
   endfunction
 
