@@ -57,7 +57,8 @@ module arc_geometry #(
     d_zero = d == '0;
     // Away from the axis (or from it, x0 = 0): a sum; towards it: a difference.
     away     = s_zero || s_pos == d_pos;
-    r        = away ? {1'b0, s} + {1'b0, d} : {1'b0, s} - {1'b0, d};
+    // One adder: s + d, or s - d as s + ~d + 1.
+    r        = {1'b0, s} + ({1'b0, d} ^ {(IncWidth + 1){!away}}) + (IncWidth + 1)'(!away);
     end_zero = r == '0;
     // A negative difference: the end is on the move's side of the axis (crossed it).
     end_pos  = away ? (s_zero ? d_pos : s_pos) : (r[IncWidth] ? d_pos : s_pos);
