@@ -91,18 +91,19 @@ module dda_circle #(
       input logic                grow,        // |a| grows at A's steps
       input logic [IncWidth-1:0] cnt);        // A's pulses left
     logic [IncWidth:0]   addend, sum;
-    logic                step, move;
-    logic [IncWidth-1:0] acc_new, mag_new, cnt_new;
+    logic                step;
+    logic [IncWidth-1:0] moved, acc_new, mag_new, cnt_new;
     addend = {1'b0, other_mag};
     if (other_done && !line) addend = addend | (kpow >> 1);
     sum     = {1'b0, acc} + addend;  // < 2^(k+1)
     step    = |(sum & kpow) && cnt != '0;
     acc_new = sum[IncWidth-1:0] & ~kpow[IncWidth-1:0];  // clearing bit k subtracts 2^k
-    // One adder each (no multiplexer after two adders): the magnitude moves by +1, by -1
-    // (all ones) or not at all, the pulse counter by -1 or not at all.
-    move    = step && !line;
-    mag_new = mag + {{(IncWidth - 1){move && !grow}}, move};
-    cnt_new = cnt - IncWidth'(step);
+    // The moved magnitude on one adder (+1, or -1 as all ones, by grow: a register, so the
+    // sum is ready early) and the counter's decrement, then the step selects: the second
+    // half-step's addend is one multiplexer after this half-step's carry, not a carry chain.
+    moved   = mag + {{(IncWidth - 1){!grow}}, 1'b1};
+    mag_new = step && !line ? moved : mag;
+    cnt_new = step ? cnt - 1'b1 : cnt;
     half_step = {step, acc_new, mag_new, cnt_new};
   endfunction
 
