@@ -21,7 +21,7 @@ awk '
     net = $0; sub(/.*\.O\(/, "", net); sub(/\).*/, "", net); sub(/^\\/, "", net)
     n = split(net, part, ".")
     where = part[1] "." part[2]
-    if (n > 3 && part[2] ~ /^u_(decoder|dda)$/) where = where "." part[3]
+    if (n > 3 && part[2] == "u_decoder") where = where "." part[3]
     if (n > 4 && part[3] == "u_arc") where = where "." part[4]
     if (n <= 2 || where ~ /_SB_/) where = "(other: top level, merged)"
     luts[where]++; total++; in_lut = 0

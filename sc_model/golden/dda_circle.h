@@ -47,6 +47,7 @@ class CircleDda {
     mag_[1] = g.y0;
     cnt_[0] = g.cnt_x;
     cnt_[1] = g.cnt_y;
+    done_ = g.cnt_x == 0 && g.cnt_y == 0;
     grow_[0] = g.grow_x;
     grow_[1] = g.grow_y;
     dir_[0] = dir_x;
@@ -65,6 +66,7 @@ class CircleDda {
     mag_[1] = dx;
     cnt_[0] = dx;
     cnt_[1] = dy;
+    done_ = false;  // 2^k >= 1 iterations
     grow_[0] = grow_[1] = false;
     dir_[0] = dir_x;
     dir_[1] = dir_y;
@@ -73,19 +75,26 @@ class CircleDda {
 
   // One iteration (an edge with the iteration strobe while !done()); the steps it emits.
   Steps iterate() {
-    const int first = y_first_ ? 1 : 0;
-    const int second = 1 - first;
-    bool step[2];
-    step[first] = half_step(first);
-    step[second] = half_step(second);  // sees the first axis's new magnitude and count
-    y_first_ = !y_first_;
     --rem_;  // counts for a line only
+    bool step[2];
+    if (line_) {
+      // A line's half-steps are independent: the order does not matter.
+      step[0] = line_half_step(0);
+      step[1] = line_half_step(1);
+    } else {
+      const int first = y_first_ ? 1 : 0;
+      const int second = 1 - first;
+      step[first] = half_step(first);
+      step[second] = half_step(second);  // sees the first axis's new magnitude and count
+    }
+    y_first_ = !y_first_;
+    done_ = line_ ? rem_ == 0 : cnt_[0] == 0 && cnt_[1] == 0;
     return Steps{step[0], step[1]};
   }
 
   // The block's iterations are over: a line's 2^k, an arc's when both axes have emitted all
   // their pulses.
-  bool done() const { return line_ ? rem_ == 0 : cnt_[0] == 0 && cnt_[1] == 0; }
+  bool done() const { return done_; }
   bool dir(int axis) const { return dir_[axis]; }
 
   // Register access for tests, the bench and the golden model's fault hook.
@@ -97,6 +106,17 @@ class CircleDda {
   void add_to_integrator(int axis, uint64_t v) { acc_[axis] += v; }
 
  private:
+  // half_step() of a line, its rules written out (the same values, fewer branches: the
+  // golden model's speed on lines): the other axis's magnitude register holds this axis's
+  // |d| and never moves, the counter only counts.
+  bool line_half_step(int a) {
+    const uint64_t sum = acc_[a] + mag_[1 - a];
+    acc_[a] = sum & ~kpow_;
+    const bool step = (sum & kpow_) != 0 && cnt_[a] != 0;
+    cnt_[a] -= step;
+    return step;
+  }
+
   // Axis a integrates the other axis's magnitude; a carry out of bit k is a step.
   bool half_step(int a) {
     const int b = 1 - a;
@@ -121,6 +141,9 @@ class CircleDda {
   bool y_first_ = false;        // this iteration steps Y before X
   bool line_ = false;           // a line: constant magnitudes, 2^k iterations
   uint64_t rem_ = 0;            // a line's iterations left
+  // done(), kept up to date at the load and after each iteration (the golden model asks at
+  // every clock): a line's rem_ == 0, an arc's two pulse counters 0.
+  bool done_ = true;
 };
 
 }  // namespace ncinterp
