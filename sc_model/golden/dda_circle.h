@@ -47,7 +47,6 @@ class CircleDda {
     mag_[1] = g.y0;
     cnt_[0] = g.cnt_x;
     cnt_[1] = g.cnt_y;
-    done_ = g.cnt_x == 0 && g.cnt_y == 0;
     grow_[0] = g.grow_x;
     grow_[1] = g.grow_y;
     dir_[0] = dir_x;
@@ -66,7 +65,6 @@ class CircleDda {
     mag_[1] = dx;
     cnt_[0] = dx;
     cnt_[1] = dy;
-    done_ = false;  // 2^k >= 1 iterations
     grow_[0] = grow_[1] = false;
     dir_[0] = dir_x;
     dir_[1] = dir_y;
@@ -75,10 +73,11 @@ class CircleDda {
 
   // One iteration (an edge with the iteration strobe while !done()); the steps it emits.
   Steps iterate() {
-    --rem_;  // counts for a line only
     bool step[2];
     if (line_) {
-      // A line's half-steps are independent: the order does not matter.
+      // A line's half-steps are independent: the order does not matter. (The RTL's rem_q
+      // counts for an arc too; nothing reads it there.)
+      --rem_;
       step[0] = line_half_step(0);
       step[1] = line_half_step(1);
     } else {
@@ -88,13 +87,12 @@ class CircleDda {
       step[second] = half_step(second);  // sees the first axis's new magnitude and count
     }
     y_first_ = !y_first_;
-    done_ = line_ ? rem_ == 0 : cnt_[0] == 0 && cnt_[1] == 0;
     return Steps{step[0], step[1]};
   }
 
   // The block's iterations are over: a line's 2^k, an arc's when both axes have emitted all
   // their pulses.
-  bool done() const { return done_; }
+  bool done() const { return line_ ? rem_ == 0 : cnt_[0] == 0 && cnt_[1] == 0; }
   bool dir(int axis) const { return dir_[axis]; }
 
   // Register access for tests, the bench and the golden model's fault hook.
@@ -141,9 +139,6 @@ class CircleDda {
   bool y_first_ = false;        // this iteration steps Y before X
   bool line_ = false;           // a line: constant magnitudes, 2^k iterations
   uint64_t rem_ = 0;            // a line's iterations left
-  // done(), kept up to date at the load and after each iteration (the golden model asks at
-  // every clock): a line's rem_ == 0, an arc's two pulse counters 0.
-  bool done_ = true;
 };
 
 }  // namespace ncinterp
