@@ -20,9 +20,9 @@
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
 // a motion block puts the decoder in PREPARE: a line for k + 1 clocks (S = F at the LF,
 // doubled at the next k edges, HOLD at the one after), an arc until arc_prepare is done
-// (max(N, 5W + 5) clocks), then HOLD or ERROR; the block buffer takes a held block at the
-// first edge where it is empty (blk_ready_i). tape_end_i (registered) with no frame
-// waiting in LEADER/BODY/COMMENT is a truncated tape.
+// (max(N, C) clocks, C = (5W + 4)(2W + 4) for the radius check), then HOLD or ERROR; the
+// block buffer takes a held block at the first edge where it is empty (blk_ready_i).
+// tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
   // Increment register width W: |X|, |Y|, |I|, |J| <= 2^IncWidth - 1 BLU.

@@ -6,16 +6,20 @@
 //   every field, until the buffer takes it (blk_ready_i);
 // - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
 //   more than K consecutive clocks unless the decoder is in error or holds a block. K =
-//   max(2^(W+1), 5W + 5) + 2 covers an arc's preparation (max(N, 5W + 5) clocks,
-//   N < 2^(W+1)) and the clocks around it. So a byte stream ends in a played program, a
-//   held block, waiting for frames, or an error, and nothing else stalls the reader.
+//   max(2^(W+1), (5W + 4)(2W + 4)) + 2 covers an arc's preparation (its dry run's N <
+//   2^(W+1) iterations and the bit-serial radius check, docs/interpolator.md 3.5) and the
+//   clocks around it. So a byte stream ends in a played program, a held block, waiting for
+//   frames, or an error, and nothing else stalls the reader;
+// - ap_line_ready_bounded: while the modal motion is G01 (so no arc is prepared), the bound
+//   is K_line = W + 3: a line's k + 1 doublings and the clocks around them.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
 // preparation's internals (which the area redesign changes). The CI depth (16 clocks)
-// covers reading a line block and holding it (ap_held_stable); ap_ready_bounded needs more
-// than K clocks of stall, so it is checked by --deep (24 clocks: a short program and K
-// clocks beyond; an arc block needs about 15 clocks to be read, so its preparation is
-// covered only partly, the cover shows it starts).
+// covers reading a line block and holding it (ap_held_stable); the stall bounds need more
+// clocks, so they are checked by --deep (24 clocks: a short program and a line's K_line
+// clocks beyond). An arc's K (114 clocks at W = 2) lies beyond that depth, so
+// ap_ready_bounded holds there only as far as the depth reaches; an arc block needs about
+// 15 clocks to be read, and the cover shows its preparation starts.
 module tape_decoder_props #(
   parameter int W  = 2,
   parameter int FW = 2,
@@ -32,7 +36,10 @@ module tape_decoder_props #(
 
   localparam int KWidth = $clog2(W + 1);
   localparam int SW = FW + W + 1;
-  localparam int K = ((1 << (W + 1)) > 5 * W + 5 ? (1 << (W + 1)) : 5 * W + 5) + 2;
+  localparam int Check = (5 * W + 4) * (2 * W + 4);  // ArcRadiusCheck::clocks
+  localparam int K = ((1 << (W + 1)) > Check ? (1 << (W + 1)) : Check) + 2;
+  localparam int KLine = W + 3;
+  localparam int LowWidth = $clog2(K + 2);
   localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
 
   logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y;
@@ -60,16 +67,20 @@ module tape_decoder_props #(
   logic [BW-1:0] block;
   assign block = {n, motion, dx_neg, dx, dy_neg, dy, i, j, step, k, grow_x, grow_y};
 
-  // Model: clocks frame_ready has been low (saturating), the tape end seen.
-  logic       f_init = 1'b1;
-  logic       f_tape_end_q;
-  logic [5:0] f_low_q;
+  // Model: clocks frame_ready has been low (saturating), the same while the modal motion
+  // is G01, the tape end seen.
+  logic                f_init = 1'b1;
+  logic                f_tape_end_q;
+  logic [LowWidth-1:0] f_low_q, f_low_line_q;
 
   always_ff @(posedge clk_i) begin
     f_init <= 1'b0;
     f_tape_end_q <= tape_end_i && rst_ni;
     if (!rst_ni || frame_ready || err || blk_valid) f_low_q <= '0;
     else if (f_low_q != '1) f_low_q <= f_low_q + 1'b1;
+    if (!rst_ni || frame_ready || err || blk_valid || motion != interp_pkg::MotionLine)
+      f_low_line_q <= '0;
+    else if (f_low_line_q != '1) f_low_line_q <= f_low_line_q + 1'b1;
   end
 
   always_comb begin
@@ -79,7 +90,10 @@ module tape_decoder_props #(
   end
 
   always_comb begin
-    if (!f_init) ap_ready_bounded: assert (f_low_q <= 6'(K));
+    if (!f_init) begin
+      ap_ready_bounded: assert (f_low_q <= LowWidth'(K));
+      ap_line_ready_bounded: assert (f_low_line_q <= LowWidth'(KLine));
+    end
   end
 
   logic f_past_valid = 1'b0;
@@ -95,7 +109,7 @@ module tape_decoder_props #(
   always_comb begin
     if (!f_init) begin
       cp_block_taken: cover (blk_valid && blk_ready_i);
-      cp_arc_holds_reader: cover (f_low_q == 6'd3);
+      cp_arc_holds_reader: cover (f_low_q == LowWidth'(3));
     end
   end
 

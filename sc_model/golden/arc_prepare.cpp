@@ -26,7 +26,7 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w) {
       r.error = g_.error;
     }
     dry_.load(g_, !w.dx_neg, !w.dy_neg);
-radius_.start();
+    radius_.start();
     running_ = !r.done;
     return r;
   }

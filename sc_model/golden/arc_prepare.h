@@ -2,7 +2,7 @@
 // clock-by-clock outputs).
 // Idea: before an arc block is handed to the block buffer, the decoder (a) checks it: zero
 // radius, quadrant and register width at once from the geometry, the radius (end within
-// 1 BLU of the circle) serially on one adder in 5W + 5 clocks (ArcRadiusCheck); and (b)
+// 1 BLU of the circle) bit-serially in (5W + 4)(2W + 4) clocks (ArcRadiusCheck); and (b)
 // runs the block's circle DDA once without pulses (a dry run, one iteration per clock) to
 // learn its iteration count N: the decoder adds F at each iteration it marks, so the block
 // carries S = F * N, and the feed generator plays its N iterations in M / F clocks, like
@@ -45,7 +45,7 @@ private:
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   ArcGeometry g_;           // of the arc being prepared, from its start edge
   CircleDda dry_;           // the dry-run DDA
-ArcRadiusCheck radius_;   // the serial radius check (5W + 5 clocks)
+  ArcRadiusCheck radius_;   // the bit-serial radius check ((5W + 4)(2W + 4) clocks)
 };
 
 }  // namespace ncinterp

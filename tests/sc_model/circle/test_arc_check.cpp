@@ -4,6 +4,7 @@
 // its result, its S = F * N and the clock it finishes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -60,6 +61,66 @@ TEST(ArcCheck, RadiusRuleAcceptsExactlyOneBluAndNotMore) {
   EXPECT_TRUE(arc_end_on_circle(6, 8, 0, 11));   // 10 -> 11
   EXPECT_FALSE(arc_end_on_circle(6, 8, 1, 11));  // 10 -> sqrt(122) = 11.05
   EXPECT_FALSE(arc_end_on_circle(6, 8, 0, 8));   // 10 -> 8
+}
+
+// The serial radius check (rtl/arc_radius_check.sv's twin), run clock by clock from its
+// start edge: its verdict is arc_end_on_circle()'s, and it is done after clocks(w) edges.
+bool serial_radius_verdict(uint64_t x0, uint64_t y0, uint64_t x1, uint64_t y1, unsigned w) {
+  ArcGeometry g;
+  g.x0 = x0;
+  g.y0 = y0;
+  g.x1 = x1;
+  g.y1 = y1;
+  ArcRadiusCheck check(w);
+  check.start();
+  uint64_t edges = 0;
+  while (!check.done() && edges <= ArcRadiusCheck::clocks(w)) {
+    check.step(g);
+    ++edges;
+  }
+  EXPECT_EQ(edges, ArcRadiusCheck::clocks(w));
+  return check.ok();
+}
+
+TEST(ArcRadiusCheck, SerialVerdictEqualsTheExactRuleOnEveryFourBitArc) {
+  const unsigned w = 4;
+  int accepted = 0;
+  for (uint64_t x0 = 0; x0 < 16; ++x0)
+    for (uint64_t y0 = 0; y0 < 16; ++y0) {
+      if (x0 == 0 && y0 == 0) continue;  // zero radius: the geometry's error 12 first
+      for (uint64_t x1 = 0; x1 < 16; ++x1)
+        for (uint64_t y1 = 0; y1 < 16; ++y1) {
+          const bool exact = arc_end_on_circle(x0, y0, x1, y1);
+          ASSERT_EQ(serial_radius_verdict(x0, y0, x1, y1, w), exact)
+              << "start (" << x0 << ", " << y0 << ") end (" << x1 << ", " << y1 << ")";
+          accepted += exact;
+        }
+    }
+  EXPECT_GT(accepted, 1000);
+}
+
+TEST(ArcRadiusCheck, SerialVerdictEqualsTheExactRuleAtWideRegisters) {
+  std::mt19937_64 rng(17);
+  for (unsigned w : {16u, 24u, 31u}) {
+    const uint64_t top = (uint64_t{1} << w) - 1;
+    int accepted = 0, rejected = 0;
+    for (int t = 0; t < 400; ++t) {
+      const uint64_t x0 = rng() % (top + 1), y0 = 1 + rng() % top;
+      // Ends near the circle (both verdicts) and anywhere (mostly far off).
+      const double r0 = std::hypot(double(x0), double(y0));
+      const double ang = double(rng() % 100000) / 100000.0 * M_PI / 2;
+      const double r1 = t % 4 == 0 ? double(rng() % (top + 1))
+                                   : r0 + (double(rng() % 4001) - 2000.0) / 1000.0;
+      const uint64_t x1 = std::min<uint64_t>(top, uint64_t(std::llround(r1 * std::cos(ang))));
+      const uint64_t y1 = std::min<uint64_t>(top, uint64_t(std::llround(r1 * std::sin(ang))));
+      const bool exact = arc_end_on_circle(x0, y0, x1, y1);
+      ASSERT_EQ(serial_radius_verdict(x0, y0, x1, y1, w), exact)
+          << "W " << w << " start (" << x0 << ", " << y0 << ") end (" << x1 << ", " << y1 << ")";
+      (exact ? accepted : rejected) += 1;
+    }
+    EXPECT_GT(accepted, 50) << "W " << w;
+    EXPECT_GT(rejected, 50) << "W " << w;
+  }
 }
 
 TEST(ArcCheck, FullQuadrantsAreInsideOneQuadrantOnlyInTheirDirection) {
@@ -126,7 +187,7 @@ TEST(ArcGeometry, LoadsMagnitudesGrowthCountsAndModulus) {
 
 // The decoder's arc preparation: same verdict as check_arc(), N marked iterations (the
 // decoder's S = F * N) with N the golden DDA's iteration count, and done in the clock after
-// max(N, 5W + 5) run edges.
+// max(N, (5W + 4)(2W + 4)) run edges.
 void expect_prepare(const QuadrantArc& a, unsigned w) {
   ArcPrepare prep(w);
   const ArcWords words = a.words();
@@ -146,7 +207,7 @@ void expect_prepare(const QuadrantArc& a, unsigned w) {
     return;
   }
   const circle_study::ArcRunStats run = circle_study::run_arc(a, w, 1u << 20);
-  const uint64_t check_steps = ArcRadiusCheck::clocks(w);  // 5W + 5
+  const uint64_t check_steps = ArcRadiusCheck::clocks(w);  // (5W + 4)(2W + 4)
   if (want == TapeError::kNone) {
     EXPECT_EQ(iterations, run.iterations) << a.describe();
     EXPECT_EQ(calls, 2 + std::max(run.iterations, check_steps)) << a.describe();
