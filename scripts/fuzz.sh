@@ -35,10 +35,10 @@ mkdir -p "$build"
 # One build at a time: several fuzzers may be started together.
 (
   flock 9
-  if [[ ! -f $build/build.ninja ]]; then
-    CCACHE_BASEDIR=$root cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_COMPILER=clang++ -DNCINTERP_FUZZ=ON "${launcher[@]}" >/dev/null
-  fi
+  # Configured every time (quick when nothing changed): a build.ninja made before an RTL or
+  # source file was deleted names that file, and ninja alone cannot regenerate past it.
+  CCACHE_BASEDIR=$root cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_COMPILER=clang++ -DNCINTERP_FUZZ=ON "${launcher[@]}" >/dev/null
   CCACHE_BASEDIR=$root nice cmake --build "$build" --target "fuzz_$target" --parallel 2
 ) 9>"$build/.build.lock"
 
