@@ -2,13 +2,13 @@
 //
 // What: while the decoder holds a complete arc block (run_i), this module (a) checks it:
 // zero radius, quadrant and register width at once (arc_geometry.sv), and the end's
-// distance to the circle on a one-bit serial adder (arc_radius_check.sv, C = (5W + 4)(2W +
-// 4) clocks); and (b) runs the block's circle DDA once without pulses, one iteration per clock, and
-// marks each iteration (iterate_o), at which the decoder adds F to the block's step: when
-// both are over, S = F * N (N = the block's iteration count) goes with the block, and the
-// feed generator plays the N iterations in M / F clocks, as it plays the 2^k iterations of
-// a line (docs/circle-dda.md section 4). A failed radius check stops the dry run. The
-// golden twin is sc_model/golden/arc_prepare.cpp.
+// distance to the circle on a one-bit serial adder (arc_radius_check.sv, C = (5W + 4)
+// (2W + 4) clocks); and (b) runs the block's circle DDA once without pulses, one iteration
+// per clock, and marks each iteration (iterate_o), at which the decoder adds F to the
+// block's step: when both are over, S = F * N (N = the block's iteration count) goes with
+// the block, and the feed generator plays the N iterations in M / F clocks, as it plays the
+// 2^k iterations of a line (docs/circle-dda.md section 4). A failed radius check stops the
+// dry run. The golden twin is sc_model/golden/arc_prepare.cpp.
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
 // high in that clock; otherwise the dry run iterates at the next edges and done_o rises
 // in the clock after the later of the last iteration and the last check step, i.e.
