@@ -104,9 +104,9 @@ class CircleDda {
   void add_to_integrator(int axis, uint64_t v) { acc_[axis] += v; }
 
  private:
-  // half_step() of a line, its rules written out (the same values, fewer branches: the
-  // golden model's speed on lines): the other axis's magnitude register holds this axis's
-  // |d| and never moves, the counter only counts.
+  // A line's half-step (rtl/dda_circle.sv with line_q): the other axis's magnitude
+  // register holds this axis's |d| and never moves, the counter only counts, and there is
+  // no finishing rule.
   bool line_half_step(int a) {
     const uint64_t sum = acc_[a] + mag_[1 - a];
     acc_[a] = sum & ~kpow_;
@@ -115,16 +115,19 @@ class CircleDda {
     return step;
   }
 
-  // Axis a integrates the other axis's magnitude; a carry out of bit k is a step.
+  // An arc's half-step: axis a integrates the other axis's magnitude; a carry out of bit k
+  // is a step, which moves this axis's magnitude by one BLU. Once the other axis has no
+  // pulses left, the addend is at least half the modulus (magnitude OR 2^(k-1): the
+  // finishing rule).
   bool half_step(int a) {
     const int b = 1 - a;
-    const uint64_t addend = cnt_[b] == 0 && !line_ ? (mag_[b] | (kpow_ >> 1)) : mag_[b];
+    const uint64_t addend = cnt_[b] == 0 ? (mag_[b] | (kpow_ >> 1)) : mag_[b];
     const uint64_t sum = acc_[a] + addend;  // < 2^(k+1)
     acc_[a] = sum & ~kpow_;
     const bool step = (sum & kpow_) != 0 && cnt_[a] != 0;
     if (step) {
       --cnt_[a];
-      if (!line_) mag_[a] = grow_[a] ? mag_[a] + 1 : mag_[a] - 1;
+      mag_[a] = grow_[a] ? mag_[a] + 1 : mag_[a] - 1;
     }
     return step;
   }

@@ -66,11 +66,7 @@ TEST(ArcCheck, RadiusRuleAcceptsExactlyOneBluAndNotMore) {
 // The serial radius check (rtl/arc_radius_check.sv's twin), run clock by clock from its
 // start edge: its verdict is arc_end_on_circle()'s, and it is done after clocks(w) edges.
 bool serial_radius_verdict(uint64_t x0, uint64_t y0, uint64_t x1, uint64_t y1, unsigned w) {
-  ArcGeometry g;
-  g.x0 = x0;
-  g.y0 = y0;
-  g.x1 = x1;
-  g.y1 = y1;
+  const ArcGeometry g{x0, y0, x1, y1};  // the check reads only the magnitudes
   ArcRadiusCheck check(w);
   check.start();
   uint64_t edges = 0;
