@@ -3,20 +3,23 @@
 // What: while the decoder holds a complete arc block (run_i), this module (a) checks it:
 // zero radius, quadrant and register width at once (arc_geometry.sv), and the end's
 // distance to the circle on a one-bit serial adder (arc_radius_check.sv, C = (5W + 4)
-// (2W + 4) clocks); and (b) runs the block's circle DDA once without pulses, one iteration
-// per clock, and marks each iteration (iterate_o), at which the decoder adds F to the
-// block's step: when both are over, S = F * N (N = the block's iteration count) goes with
-// the block, and the feed generator plays the N iterations in M / F clocks, as it plays the
-// 2^k iterations of a line (docs/circle-dda.md section 4). A failed radius check stops the
-// dry run. The golden twin is sc_model/golden/arc_prepare.cpp.
+// (2W + 4) clocks); and (b) runs the block's circle DDA once without pulses and marks each
+// iteration (iterate_o), at which the decoder adds F to the block's step: when both are
+// over, S = F * N (N = the block's iteration count) goes with the block, and the feed
+// generator plays the N iterations in M / F clocks, as it plays the 2^k iterations of a
+// line (docs/circle-dda.md section 4). A failed radius check stops the dry run.
+// The dry run is a second dda_circle, one iteration per clock (SerialDryRun = 0), or the
+// bit-serial arc_dry_run.sv, 2W clocks per iteration on a fifth of the logic (1): the
+// trade of docs/interpolator.md 3.5. The golden twin is sc_model/golden/arc_prepare.cpp.
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
-// high in that clock; otherwise the dry run iterates at the next edges and done_o rises
-// in the clock after the later of the last iteration and the last check step, i.e.
-// max(N, C) clocks after the start edge. done_o, the error and iterate_o are combinational
-// from registers (and the held block); the decoder acts on them at that edge.
+// high in that clock; otherwise the dry run and the check run from the next edges and
+// done_o rises in the clock after the later of the two: max(N, C) clocks after the start
+// edge, max(2WN + k, C) with SerialDryRun. done_o, the error and iterate_o are
+// combinational from registers (and the held block); the decoder acts on them at that edge.
 module arc_prepare #(
   parameter int IncWidth  = 16,
-  parameter int KWidth    = $clog2(IncWidth + 1)
+  parameter int KWidth    = $clog2(IncWidth + 1),
+  parameter bit SerialDryRun = 1'b0
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -49,12 +52,7 @@ module arc_prepare #(
   logic                grow_x, grow_y, geo_err;
   logic [3:0]          geo_code;
   logic [KWidth-1:0]   k;
-  logic                dry_done, check_done, check_ok;
-
-  // The dry run emits no pulses and has no direction.
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic                dry_carry_x, dry_carry_y, dry_step_x, dry_step_y, dry_dir_x, dry_dir_y;
-  /* verilator lint_on UNUSEDSIGNAL */
+  logic                dry_iterate, dry_done, check_done, check_ok;
 
   assign start = run_i && !running_q;
 
@@ -65,15 +63,29 @@ module arc_prepare #(
     .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
   );
 
-  dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
-    .clk_i, .rst_ni,
-    .load_i(start), .line_i(1'b0), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i),
-    .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
-    .strobe_i(running_q),
-    .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),
-    .dir_x_o(dry_dir_x), .step_y_o(dry_step_y), .dir_y_o(dry_dir_y),
-    .done_o(dry_done)
-  );
+  if (SerialDryRun) begin : g_serial_dry_run
+    arc_dry_run #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
+      .clk_i, .rst_ni, .start_i(start), .run_i(running_q), .k_i(k),
+      .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y),
+      .iterate_o(dry_iterate), .done_o(dry_done)
+    );
+  end else begin : g_parallel_dry_run
+    // The dry run emits no pulses and has no direction.
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic dry_carry_x, dry_carry_y, dry_step_x, dry_step_y, dry_dir_x, dry_dir_y;
+    /* verilator lint_on UNUSEDSIGNAL */
+    dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
+      .clk_i, .rst_ni,
+      .load_i(start), .line_i(1'b0), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i),
+      .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
+      .strobe_i(running_q),
+      .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),
+      .dir_x_o(dry_dir_x), .step_y_o(dry_step_y), .dir_y_o(dry_dir_y),
+      .done_o(dry_done)
+    );
+    // One iteration at every running edge until done (done_o is stable in the clock).
+    assign dry_iterate = !dry_done;
+  end
 
   arc_radius_check #(.IncWidth(IncWidth)) u_radius (
     .clk_i, .rst_ni, .start_i(start),
@@ -101,7 +113,7 @@ module arc_prepare #(
     end else if (!run_i || done_o) begin
       running_d = 1'b0;
     end else begin
-      iterate_o = !dry_done;
+      iterate_o = dry_iterate;
     end
   end
 

@@ -28,7 +28,11 @@ module interp_top #(
   // Frame offset counter (error reports).
   parameter int OffsetWidth    = 32,
   // Width of feed_modulus_i.
-  parameter int ModulusWidth   = 48
+  parameter int ModulusWidth   = 48,
+  // An arc's dry run (arc_prepare.sv): 0 = a second circle DDA, one iteration per clock;
+  // 1 = bit-serial (arc_dry_run.sv), 2W clocks per iteration and about 200 logic cells
+  // fewer at W = 16 (docs/interpolator.md 3.5 says when the slower dry run leaves gaps).
+  parameter bit SerialDryRun   = 1'b0
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -124,7 +128,8 @@ module interp_top #(
 
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
-    .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth)
+    .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
+    .SerialDryRun(SerialDryRun)
   ) u_decoder (
     .clk_i, .rst_ni,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,

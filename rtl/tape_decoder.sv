@@ -20,7 +20,8 @@
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
 // a motion block puts the decoder in PREPARE: a line for k + 1 clocks (S = F at the LF,
 // doubled at the next k edges, HOLD at the one after), an arc until arc_prepare is done
-// (max(N, C) clocks, C = (5W + 4)(2W + 4) for the radius check), then HOLD or ERROR; the
+// (max(N, C) clocks, or max(2WN + k, C) with SerialDryRun; C = (5W + 4)(2W + 4) for the
+// radius check), then HOLD or ERROR; the
 // block buffer takes a held block at the first edge where it is empty (blk_ready_i).
 // tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
@@ -35,7 +36,9 @@ module tape_decoder #(
   // N register width.
   parameter int SeqWidth       = 20,
   // Frame offset counter width (error reports).
-  parameter int OffsetWidth    = 32
+  parameter int OffsetWidth    = 32,
+  // The arc's dry run: a parallel circle DDA (0) or bit-serial (1), arc_prepare.sv.
+  parameter bit SerialDryRun   = 1'b0
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -388,7 +391,7 @@ module tape_decoder #(
 
   // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N (the
   // decoder adds F at each, above).
-  arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth)) u_arc (
+  arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth), .SerialDryRun(SerialDryRun)) u_arc (
     .clk_i, .rst_ni, .run_i(in_arc),
     .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),

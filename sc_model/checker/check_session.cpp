@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "arc_prepare.h"
 #include "chords/chord_planner.h"
 #include "frame_source.h"
 #include "line_schedule.h"
@@ -18,15 +19,18 @@ namespace ncinterp::checker {
 namespace {
 
 // Enough clocks for the whole program: reading every frame plus every block's time (arcs
-// get twice their iterations as slack), so a run that needs more has hung.
+// get twice their iterations as slack, and their preparation: ArcPrepare::clocks), so a run
+// that needs more has hung.
 uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
-                      uint64_t cycles_per_frame, uint64_t modulus) {
+                      uint64_t cycles_per_frame, const InterpConfig& cfg) {
   uint64_t total = static_cast<uint64_t>(frames) * cycles_per_frame + 10000;
   for (const ProgrammedBlock& b : blocks) {
     const uint64_t big = static_cast<uint64_t>(std::max({std::llabs(b.tape.dx), std::llabs(b.tape.dy),
                                                          std::llabs(b.tape.i), std::llabs(b.tape.j)}));
-    const LineSchedule s(big, 0, b.tape.feed, modulus);
+    const LineSchedule s(big, 0, b.tape.feed, cfg.feed_modulus);
     total += std::max(s.duration(), 4 * s.iterations() + 4) + 4;
+    if (b.is_arc())
+      total += ArcPrepare::clocks(cfg.inc_width, cfg.serial_dry_run, 4 * s.iterations(), s.k() + 2);
   }
   return total + total / 8;
 }
@@ -97,7 +101,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);
   const uint64_t budget =
-      setup.max_cycles ? setup.max_cycles : cycle_budget(blocks, frames.size(), cpf, cfg.feed_modulus);
+      setup.max_cycles ? setup.max_cycles : cycle_budget(blocks, frames.size(), cpf, cfg);
   out.checker = std::make_unique<TrajectoryChecker>(std::move(blocks), out.reference.get(), co);
 
   TrajectoryChecker& checker = *out.checker;

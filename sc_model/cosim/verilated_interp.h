@@ -25,7 +25,8 @@ class VerilatedInterp {
 
   // The RTL is verilated with its default parameters: cfg must have them (only
   // feed_modulus, an input port, is free). A width variant (sw/tools/sweep/rtl_variant/: the
-  // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W.
+  // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W, one with
+  // the serial dry run (-GSerialDryRun=1'b1) with NCINTERP_RTL_SERIAL_DRY_RUN.
   explicit VerilatedInterp(const InterpConfig& cfg)
       : context_(std::make_unique<VerilatedContext>()),
         model_(std::make_unique<Model>(context_.get(), kScope)),
@@ -33,6 +34,9 @@ class VerilatedInterp {
     InterpConfig rtl;
 #ifdef NCINTERP_RTL_INC_WIDTH
     rtl.inc_width = NCINTERP_RTL_INC_WIDTH;
+#endif
+#ifdef NCINTERP_RTL_SERIAL_DRY_RUN
+    rtl.serial_dry_run = true;
 #endif
     if (!cfg.same_parameters(rtl))
       throw std::invalid_argument(

@@ -4,14 +4,15 @@
 
 namespace ncinterp {
 
-ArcPrepare::ArcPrepare(unsigned inc_width)
-    : inc_width_(inc_width), radius_(inc_width) {
+ArcPrepare::ArcPrepare(unsigned inc_width, bool serial_dry_run)
+    : inc_width_(inc_width), serial_(serial_dry_run), serial_dry_(inc_width), radius_(inc_width) {
   reset();
 }
 
 void ArcPrepare::reset() {
   running_ = false;
   dry_ = CircleDda{};
+  serial_dry_ = ArcDryRun(inc_width_);
   radius_ = ArcRadiusCheck(inc_width_);
 }
 
@@ -25,23 +26,33 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w) {
       r.done = true;
       r.error = g_.error;
     }
-    dry_.load(g_, !w.dx_neg, !w.dy_neg);
+    if (serial_)
+      serial_dry_.start(g_);
+    else
+      dry_.load(g_, !w.dx_neg, !w.dy_neg);
     radius_.start();
     running_ = !r.done;
     return r;
   }
   const bool check_done = radius_.done();
   const bool check_ok = radius_.ok();
-  if (check_done && (!check_ok || dry_.done())) {
+  bool dry_done, dry_iterate;
+  if (serial_) {
+    dry_done = serial_dry_.done();
+    // It steps at every running edge, the last one too (its run_i is running_q).
+    dry_iterate = serial_dry_.step(g_);
+  } else {
+    dry_done = dry_.done();
+    dry_iterate = !dry_done;
+  }
+  if (check_done && (!check_ok || dry_done)) {
     r.done = true;
     r.error = check_ok ? TapeError::kNone : TapeError::kArcEndpointOffCircle;
     running_ = false;
     return r;
   }
-  if (!dry_.done()) {
-    dry_.iterate();
-    r.iterate = true;
-  }
+  r.iterate = dry_iterate;
+  if (!serial_ && dry_iterate) dry_.iterate();
   if (!check_done) radius_.step(g_);
   return r;
 }

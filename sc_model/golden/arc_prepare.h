@@ -3,14 +3,17 @@
 // Idea: before an arc block is handed to the block buffer, the decoder (a) checks it: zero
 // radius, quadrant and register width at once from the geometry, the radius (end within
 // 1 BLU of the circle) bit-serially in (5W + 4)(2W + 4) clocks (ArcRadiusCheck); and (b)
-// runs the block's circle DDA once without pulses (a dry run, one iteration per clock) to
-// learn its iteration count N: the decoder adds F at each iteration it marks, so the block
-// carries S = F * N, and the feed generator plays its N iterations in M / F clocks, like
-// the 2^k iterations of a line (docs/circle-dda.md section 4). Both run in parallel; a
-// failed radius check stops the dry run.
+// runs the block's circle DDA once without pulses (a dry run) to learn its iteration count
+// N: the decoder adds F at each iteration it marks, so the block carries S = F * N, and the
+// feed generator plays its N iterations in M / F clocks, like the 2^k iterations of a line
+// (docs/circle-dda.md section 4). The dry run is a CircleDda, one iteration per clock, or
+// with SerialDryRun the bit-serial ArcDryRun, 2W clocks per iteration. Both run in
+// parallel with the check; a failed radius check stops the dry run.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
+#include "arc_dry_run.h"
 #include "arc_geometry.h"
 #include "arc_radius_check.h"
 #include "dda_circle.h"
@@ -20,9 +23,15 @@ namespace ncinterp {
 
 class ArcPrepare {
  public:
-  explicit ArcPrepare(unsigned inc_width);
+  ArcPrepare(unsigned inc_width, bool serial_dry_run);
 
   void reset();
+
+  // Clocks from the start edge of a good arc of n iterations (bit length k) to done.
+  static uint64_t clocks(unsigned inc_width, bool serial_dry_run, uint64_t n, unsigned k) {
+    const uint64_t dry = serial_dry_run ? ArcDryRun::clocks(inc_width, n, k) : n;
+    return std::max(dry, ArcRadiusCheck::clocks(inc_width)) + 1;
+  }
 
   // What the decoder sees in a clock with run_i = 1: done (the result is final; the
   // decoder leaves its arc state at this edge), the error code (kNone = good arc), and
@@ -41,10 +50,12 @@ class ArcPrepare {
 
 private:
   unsigned inc_width_;
+  bool serial_;             // SerialDryRun: serial_dry_ runs, else dry_
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   ArcGeometry g_;           // of the arc being prepared, from its start edge
-  CircleDda dry_;           // the dry-run DDA
+  CircleDda dry_;           // the dry-run DDA (one iteration per clock)
+  ArcDryRun serial_dry_;    // the bit-serial dry run (2W clocks per iteration)
   ArcRadiusCheck radius_;   // the bit-serial radius check ((5W + 4)(2W + 4) clocks)
 };
 

@@ -26,6 +26,7 @@ struct InterpConfig {
   unsigned seq_width = 20;        // SeqWidth
   unsigned offset_width = 32;     // OffsetWidth
   unsigned modulus_width = 48;    // ModulusWidth
+  bool serial_dry_run = false;    // SerialDryRun: an arc's dry run bit-serial (ArcDryRun)
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
 
@@ -35,7 +36,8 @@ struct InterpConfig {
     return inc_width == o.inc_width && frac_digits == o.frac_digits &&
            feed_width == o.feed_width && feed_frac_digits == o.feed_frac_digits &&
            pos_width == o.pos_width && seq_width == o.seq_width &&
-           offset_width == o.offset_width && modulus_width == o.modulus_width;
+           offset_width == o.offset_width && modulus_width == o.modulus_width &&
+           serial_dry_run == o.serial_dry_run;
   }
 
   static uint64_t feed_modulus_for(double clock_hz, unsigned feed_frac_digits) {

@@ -25,7 +25,7 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
       feed_limit_(low_mask(cfg.feed_width)),
       seq_limit_(low_mask(cfg.seq_width)),
       offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
-      arc_(cfg.inc_width) {}
+      arc_(cfg.inc_width, cfg.serial_dry_run) {}
 
 void GoldenTapeDecoder::reset() {
   state_ = State::kLeader;

@@ -9,7 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "arc_radius_check.h"
+#include "arc_prepare.h"
 #include "atomic_file.h"
 #include "frame_source.h"
 #include "system_top.h"
@@ -30,7 +30,7 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
   for (const tape::Block& b : program.blocks) {
     // Iterations: 2^k for a line; fewer than 2^(k+1) for an arc, whose k is that of its
     // largest coordinate about the centre (<= |I| + |X|, |J| + |Y|), and whose preparation
-    // in the decoder takes max(N, its radius check's clocks) (docs/interpolator.md 3.5).
+    // in the decoder takes ArcPrepare::clocks (docs/interpolator.md 3.5).
     const bool arc = b.motion != tape::Motion::kLine;
     const uint64_t m = static_cast<uint64_t>(
         arc ? std::max(std::llabs(b.i) + std::llabs(b.dx), std::llabs(b.j) + std::llabs(b.dy))
@@ -38,7 +38,8 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     unsigned k = 0;
     while (k < 62 && (m >> k) != 0) ++k;
     const uint64_t iterations = arc ? 2ull << k : 1ull << k;
-    const uint64_t prepare = arc ? iterations + ArcRadiusCheck::clocks(cfg.inc_width) : 0;
+    const uint64_t prepare =
+        arc ? ArcPrepare::clocks(cfg.inc_width, cfg.serial_dry_run, iterations, k) : 0;
     const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
     total += std::max(iterations + 1, programmed) + prepare + 3;
   }

@@ -16,7 +16,9 @@ std::string joined(const std::vector<std::string>& items) {
   return s;
 }
 
-std::string build_dir(const RtlVariantSetup& s, unsigned w) { return s.build_root + "/w" + std::to_string(w); }
+std::string build_dir(const RtlVariantSetup& s, unsigned w) {
+  return s.build_root + "/w" + std::to_string(w) + (s.serial_dry_run ? "-serial" : "");
+}
 
 std::string step_failure(const std::string& what, const ProcessOutcome& p, const std::string& log) {
   if (!p.started || p.signal) return what + ": " + p.failure;
@@ -38,7 +40,8 @@ std::string build_rtl_variant(const RtlVariantSetup& s, unsigned w) {
   if (!s.cxx_compiler.empty()) configure.push_back("-DCMAKE_CXX_COMPILER=" + s.cxx_compiler);
   for (const std::string& d : {"INC_WIDTH=" + std::to_string(w), "NCINTERP_SOURCE_DIR=" + s.source_dir,
                                "RTL_SOURCES=" + joined(s.rtl_sources), "VERILATOR_ARGS=" + joined(s.verilator_args),
-                               "GOLDEN_LIBRARY=" + s.golden_library})
+                               "GOLDEN_LIBRARY=" + s.golden_library,
+                               std::string("SERIAL_DRY_RUN=") + (s.serial_dry_run ? "ON" : "OFF")})
     configure.push_back("-D" + d);
   const std::string configure_log = dir + "/configure.log";
   const ProcessOutcome c = run_process(configure, configure_log);

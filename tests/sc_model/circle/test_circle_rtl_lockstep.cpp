@@ -1,7 +1,7 @@
 // Module-level lock step of the RTL circle modules against their golden twins, every clock:
 // dda_circle (rtl/dda_circle.sv) against CircleDda under random iteration strobes, and
 // arc_prepare (checks + dry run, rtl/arc_prepare.sv) against ArcPrepare on good and bad
-// arcs, at W = 16 and at W = 6 (where random words hit every check).
+// arcs, at W = 16 and at W = 6 (where random words hit every check), with either dry run.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "Varc_prepare.h"
+#include "Varc_prepare_serial.h"
+#include "Varc_prepare_serial_w6.h"
 #include "Varc_prepare_w6.h"
 #include "Vdda_circle.h"
 #include "arc_geometry.h"
@@ -114,7 +116,7 @@ template <typename Model>
   const int idle_before = static_cast<int>(rng() % 3);
   bool done = false;
   int idle_after = 2;
-  for (uint64_t clock = 0; clock < 400000 && idle_after > 0; ++clock) {
+  for (uint64_t clock = 0; clock < (uint64_t{1} << 24) && idle_after > 0; ++clock) {
     const bool run = clock >= uint64_t(idle_before) && !done;
     m.run_i = run;
     m.eval();
@@ -144,15 +146,18 @@ template <typename Model>
   return ::testing::AssertionSuccess();
 }
 
-TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW16) {
+// Random arcs at W = 16 (radius up to max_radius, some ends off the circle, some the long
+// way round) through the verilated arc_prepare and its twin.
+template <typename Model>
+void arc_prepare_lockstep_w16(bool serial, int64_t max_radius) {
   auto ctx = std::make_unique<VerilatedContext>();
-  Varc_prepare m(ctx.get());
+  Model m(ctx.get());
   reset(m);
-  ArcPrepare golden(16);
+  ArcPrepare golden(16, serial);
   std::mt19937_64 rng(4);
   int good = 0;
   for (int t = 0; t < 300; ++t) {
-    QuadrantArc a = circle_study::random_arc(rng, t % 2 ? 65535 : 200);
+    QuadrantArc a = circle_study::random_arc(rng, t % 2 ? max_radius : 200);
     if (t % 4 == 1) a.y1 += int64_t(rng() % 7) - 3;
     if (t % 9 == 2) a.ccw = !a.ccw;
     const ArcWords w = a.words();
@@ -163,11 +168,13 @@ TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW16) {
   EXPECT_GT(good, 150);
 }
 
-TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW6) {
+// Random words at W = 6, where every check's verdict occurs.
+template <typename Model>
+void arc_prepare_lockstep_w6(bool serial) {
   auto ctx = std::make_unique<VerilatedContext>();
-  Varc_prepare_w6 m(ctx.get());
+  Model m(ctx.get());
   reset(m);
-  ArcPrepare golden(6);
+  ArcPrepare golden(6, serial);
   std::mt19937_64 rng(6);
   int codes[16] = {0};
   for (int t = 0; t < 20000; ++t) {
@@ -194,6 +201,23 @@ TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW6) {
   for (TapeError e : {TapeError::kNone, TapeError::kValueTooWide, TapeError::kArcCrossesQuadrant,
                       TapeError::kArcEndpointOffCircle, TapeError::kArcZeroRadius})
     EXPECT_GT(codes[static_cast<int>(e)], 20) << "code " << int(e);
+}
+
+TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW16) {
+  arc_prepare_lockstep_w16<Varc_prepare>(false, 65535);
+}
+
+TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW6) {
+  arc_prepare_lockstep_w6<Varc_prepare_w6>(false);
+}
+
+// The bit-serial dry run (SerialDryRun): radii up to 2^12 keep the runs short (2WN clocks).
+TEST(CircleRtlLockstep, SerialDryRunArcPrepareEqualsGoldenEveryClockAtW16) {
+  arc_prepare_lockstep_w16<Varc_prepare_serial>(true, 4095);
+}
+
+TEST(CircleRtlLockstep, SerialDryRunArcPrepareEqualsGoldenEveryClockAtW6) {
+  arc_prepare_lockstep_w6<Varc_prepare_serial_w6>(true);
 }
 
 }  // namespace

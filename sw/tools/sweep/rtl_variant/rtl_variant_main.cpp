@@ -1,5 +1,6 @@
 // ncinterp_rtl_variant: the lock-step cosim (sc_model/cosim/lockstep.h) of one width
-// variant of the RTL (verilated with -GIncWidth=W) against the golden model at W.
+// variant of the RTL (verilated with -GIncWidth=W, and -GSerialDryRun=1'b1 if so
+// configured) against the golden model with the same parameters.
 // Usage: ncinterp_rtl_variant [--clock-hz F] [--reader-cps C] TAPE...   (.tape frames)
 // Prints one line per tape, "done CYCLES TAPE" when both engines agreed on every clock up
 // to the end of the program, else "mismatch|error|cycle_limit CYCLES TAPE: detail".
@@ -48,6 +49,9 @@ int main(int argc, char** argv) {
 
   cosim::Options options;
   options.config.inc_width = NCINTERP_RTL_INC_WIDTH;
+#ifdef NCINTERP_RTL_SERIAL_DRY_RUN
+  options.config.serial_dry_run = true;
+#endif
   options.config.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, options.config.feed_frac_digits);
   options.cycles_per_frame = FrameSource::cycles_per_frame_for(clock_hz, reader_cps);
   int code = 0;

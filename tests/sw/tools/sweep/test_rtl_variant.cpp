@@ -1,6 +1,7 @@
-// The RTL verilated at a width W in lock step with the golden model at W. The Heavy test
-// builds a real variant (W = 8, about 20 s the first time; the build tree is kept under
-// the test's build directory, so reruns only check it is up to date).
+// The RTL verilated at a width W in lock step with the golden model at W. The Heavy tests
+// build real variants (W = 8, and W = 16 with the serial dry run: about 20 s each the first
+// time; the build trees are kept under the test's build directory, so reruns only check
+// they are up to date).
 #include <gtest/gtest.h>
 
 #include "inputs/contour_inputs.h"
@@ -33,6 +34,32 @@ TEST_F(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
   EXPECT_TRUE(r.all_match) << r.summary;
   // The variant ran as many clocks as the golden model under the checker: the same run.
   EXPECT_EQ(r.summary, "match on 1 tapes, " + std::to_string(in.cycles) + " clocks");
+}
+
+// The serial dry run (interp_top's SerialDryRun) on the 50 mm circle programmed as arcs at
+// W = 16, in lock step with the golden model configured alike. Its arcs (N about 10^5)
+// take 2WN clocks to prepare: the run is longer than the parallel dry run's, which shows
+// that the variant is the serial one.
+TEST_F(RtlVariantHeavy, SerialDryRunMatchesTheGoldenModelOnEveryClock) {
+  RtlVariantSetup s = default_rtl_variant_setup(std::string(NCINTERP_SWEEP_TEST_WORK) + "/variant-cache");
+  s.reader_cps = 100000;
+  s.serial_dry_run = true;
+  MeasureSetup m;
+  m.first_stage.feed_mm_min = 20000;
+  m.first_stage.arcs_circle = true;
+  m.reader_cps = s.reader_cps;
+  const std::string input = test::example("contours/circle_r50.json");
+  const SweepInput circle{input, firststage::read_contour(input, firststage::InputOptions{})};
+  const std::string tape = path("circle_arcs_w16.tape");
+  const InputResult in = measure_input(circle, 16, m, tape);
+  ASSERT_TRUE(in.measured()) << in.failure;
+
+  const RtlResult r = run_rtl_variant(s, 16, {tape});
+  EXPECT_TRUE(r.ran);
+  EXPECT_TRUE(r.all_match) << r.summary;
+  const std::string prefix = "match on 1 tapes, ";
+  ASSERT_EQ(r.summary.rfind(prefix, 0), 0u) << r.summary;
+  EXPECT_GT(std::stoull(r.summary.substr(prefix.size())), in.cycles + 2 * 16 * 100000) << r.summary;
 }
 
 TEST_F(RtlVariant, ABrokenRtlFileGivesTheBuildFailureWithVerilatorsReason) {
