@@ -6,9 +6,9 @@
 //   every field, until the buffer takes it (blk_ready_i);
 // - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
 //   more than K consecutive clocks unless the decoder is in error or holds a block. K =
-//   max(2^(W+1), (5W + 4)(2W + 4)) + 2 covers an arc's preparation (its dry run's N <
-//   2^(W+1) iterations and the bit-serial radius check, docs/interpolator.md 3.5) and the
-//   clocks around it. So a byte stream ends in a played program, a held block, waiting for
+//   max(D, (5W + 4)(2W + 4)) + 2 covers an arc's preparation (its dry run, D = 2^(W+1) >
+//   N clocks, or 2W 2^(W+1) + W with SerialDryRun, and the bit-serial radius check,
+//   docs/interpolator.md 3.5) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
 //   frames, or an error, and nothing else stalls the reader;
 // - ap_line_ready_bounded: while the modal motion is G01 (so no arc is prepared), the bound
 //   is K_line = W + 3: a line's k + 1 doublings and the clocks around them.
@@ -24,7 +24,8 @@ module tape_decoder_props #(
   parameter int W  = 2,
   parameter int FW = 2,
   parameter int NW = 2,
-  parameter int OW = 5
+  parameter int OW = 5,
+  parameter bit SerialDryRun = 1'b0
 ) (
   input logic       clk_i,
   input logic       rst_ni,
@@ -37,7 +38,8 @@ module tape_decoder_props #(
   localparam int KWidth = $clog2(W + 1);
   localparam int SW = FW + W + 1;
   localparam int Check = (5 * W + 4) * (2 * W + 4);  // ArcRadiusCheck::clocks
-  localparam int K = ((1 << (W + 1)) > Check ? (1 << (W + 1)) : Check) + 2;
+  localparam int Dry = SerialDryRun ? 2 * W * (1 << (W + 1)) + W : 1 << (W + 1);
+  localparam int K = (Dry > Check ? Dry : Check) + 2;
   localparam int KLine = W + 3;
   localparam int LowWidth = $clog2(K + 2);
   localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
@@ -54,7 +56,7 @@ module tape_decoder_props #(
 
   tape_decoder #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .SeqWidth(NW),
-    .OffsetWidth(OW)
+    .OffsetWidth(OW), .SerialDryRun(SerialDryRun)
   ) u_dut (
     .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
     .blk_valid_o(blk_valid), .blk_ready_i, .blk_n_o(n), .blk_motion_o(motion),

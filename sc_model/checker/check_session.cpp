@@ -85,6 +85,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
 
   InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
   cfg.pos_width = setup.pos_width;
+  cfg.serial_dry_run = setup.serial_dry_run;
   if (contour) {
     ReferenceOptions ro;
     ro.blu_mm = out.blu_mm;
