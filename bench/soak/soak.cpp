@@ -24,6 +24,7 @@ struct Args {
   double seconds = 0.5;
   std::string dump;
   bool no_arcs = false;
+  bool serial_dry_run = false;
 };
 
 std::string tape_command(const regression::Case& c, const std::string& input) {
@@ -63,10 +64,11 @@ void dump_case(const std::string& dir, const regression::Case& c, const regressi
     const checker::GridPoint s = out->reference ? out->reference->start() : checker::GridPoint{};
     char buf[512];
     std::snprintf(buf, sizeof buf,
-                  "ncinterp check %s.tape --contour %s --tol %g --blu %g --width %u --reader-cps %g "
+                  "ncinterp check %s.tape --contour %s --tol %g --blu %g --width %u --reader-cps %g%s "
                   "--start %.6f,%.6f%s --svg %s.svg --report %s.report.json\n",
                   c.name.c_str(), in.file_name.c_str(), c.first_stage.tol_mm, c.first_stage.blu_mm,
-                  c.first_stage.width, c.check.reader_cps, s.x * out->blu_mm, s.y * out->blu_mm,
+                  c.first_stage.width, c.check.reader_cps, c.check.serial_dry_run ? " --serial-dry-run" : "",
+                  s.x * out->blu_mm, s.y * out->blu_mm,
                   c.first_stage.cutter_radius_mm > 0
                       ? (" --cutter-radius " + std::to_string(c.first_stage.cutter_radius_mm) +
                          " --side " + (c.first_stage.side_left ? "left" : "right"))
@@ -92,8 +94,15 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--seconds", a.seconds, "machine time of each contour (sets the feed)")->capture_default_str();
   app.add_option("--dump", a.dump, "directory for failing cases (input, tape, report, commands)");
+  app.add_flag("--serial-dry-run", a.serial_dry_run,
+               "play as the board does: an arc's dry run bit-serial (golden engine only)");
   app.add_flag("--no-arcs", a.no_arcs, "never cut arcs as G02/G03 blocks (--arcs circle); by default half the contours with arcs are");
   CLI11_PARSE(app, argc, argv);
+  if (a.serial_dry_run && a.engine != "golden") {
+    std::fprintf(stderr, "ncinterp_soak: --serial-dry-run needs --engine golden (the verilated RTL "
+                         "has the parallel dry run)\n");
+    return 1;
+  }
 
   std::vector<EngineKind> engines;
   if (a.engine != "rtl") engines.push_back(EngineKind::kGolden);
@@ -117,6 +126,7 @@ int main(int argc, char** argv) {
       std::printf("%llu: FAIL generating the case: %s\n", static_cast<unsigned long long>(seed), e.what());
       continue;
     }
+    c.check.serial_dry_run = a.serial_dry_run;
     for (EngineKind engine : engines) {
       c.check.engine = engine;
       if (engine == EngineKind::kRtl &&
