@@ -79,40 +79,51 @@ module dda_circle #(
   // has no pulses left, bit k-1 of the addend is forced on (at least half a step per
   // iteration), so A's last pulses come out even where |b| is 0 (an arc ending on an
   // axis). An axis with no pulses left never steps. In a line both rules are idle: the
-  // magnitudes are constants and the integrators independent. Result: {step, acc, mag, cnt}.
-  localparam int HalfWidth = 1 + 3 * IncWidth;
-  function automatic logic [HalfWidth-1:0] half_step(
-      input logic                line,        // a line: the magnitudes do not move
+  // magnitudes are constants and the integrators independent. It is two functions:
+  // integrate() is the adder, settle() the step and what it moves.
+  // integrate(): acc + |b| (bit k-1 forced on when b is done), < 2^(k+1).
+  function automatic logic [IncWidth:0] integrate(
+      input logic                line,        // a line: no finishing rule
       input logic [IncWidth:0]   kpow,        // 2^k (one-hot)
       input logic [IncWidth-1:0] acc,         // A's integrator, < 2^k
       input logic [IncWidth-1:0] other_mag,   // |b|, < 2^k
-      input logic                other_done,  // b has no pulses left
-      input logic [IncWidth-1:0] mag,         // |a|
-      input logic                grow,        // |a| grows at A's steps
-      input logic [IncWidth-1:0] cnt);        // A's pulses left
-    logic [IncWidth:0]   addend, sum;
-    logic                step;
-    logic [IncWidth-1:0] moved, acc_new, mag_new, cnt_new;
+      input logic                other_done); // b has no pulses left
+    logic [IncWidth:0] addend;
     addend = {1'b0, other_mag};
     if (other_done && !line) addend = addend | (kpow >> 1);
-    sum     = {1'b0, acc} + addend;  // < 2^(k+1)
+    integrate = {1'b0, acc} + addend;
+  endfunction
+
+  // settle(): from the sum, {step, acc, mag, cnt} of A after its half-step.
+  localparam int HalfWidth = 1 + 3 * IncWidth;
+  function automatic logic [HalfWidth-1:0] settle(
+      input logic                line,        // a line: the magnitudes do not move
+      input logic [IncWidth:0]   kpow,        // 2^k (one-hot)
+      input logic [IncWidth:0]   sum,         // integrate()'s
+      input logic [IncWidth-1:0] moved,       // |a| + 1 or |a| - 1 (by grow)
+      input logic [IncWidth-1:0] mag,         // |a|
+      input logic [IncWidth-1:0] cnt);        // A's pulses left
+    logic                step;
+    logic [IncWidth-1:0] acc_new, mag_new, cnt_new;
     step    = |(sum & kpow) && cnt != '0;
     acc_new = sum[IncWidth-1:0] & ~kpow[IncWidth-1:0];  // clearing bit k subtracts 2^k
-    // The moved magnitude on one adder (+1, or -1 as all ones, by grow: a register, so the
-    // sum is ready early) and the counter's decrement, then the step selects: the second
-    // half-step's addend is one multiplexer after this half-step's carry, not a carry chain.
-    moved   = mag + {{(IncWidth - 1){!grow}}, 1'b1};
     mag_new = step && !line ? moved : mag;
     cnt_new = step ? cnt - 1'b1 : cnt;
-    half_step = {step, acc_new, mag_new, cnt_new};
+    settle = {step, acc_new, mag_new, cnt_new};
   endfunction
 
   logic                   iterate, active;
   logic [IncWidth:0]      kpow_load;
   // The two half-steps of an iteration: A's first, then B's, which integrates the
-  // magnitude A has just moved.
+  // magnitude A has just moved. B's sum is formed for both outcomes of A's half-step
+  // (kept: |a| and A's count as they are; stepped: |a| moved, one pulse fewer) beside A's,
+  // and A's step picks one: one carry chain and a multiplexer per clock, not two carry
+  // chains in series (the critical path before, docs/bit-widths.md section 6). The moved
+  // magnitudes come from registers (grow is one), so they are ready early.
   logic                   first_step, second_step;
   logic [IncWidth-1:0]    first_acc, first_mag, first_cnt, second_acc, second_mag, second_cnt;
+  logic [IncWidth-1:0]    moved_a, moved_b;
+  logic [IncWidth:0]      first_sum, kept_sum, stepped_sum;
 
   assign iterate   = strobe_i && !done_o;
   assign active    = load_i || iterate || step_x_q || step_y_q;
@@ -125,7 +136,8 @@ module dda_circle #(
     {step_x_d, step_y_d, carry_x_o, carry_y_o} = '0;
     {kpow_d, acc_a_d, acc_b_d, mag_a_d, mag_b_d, cnt_a_d, cnt_b_d, grow_a_d, grow_b_d,
      a_is_y_d, line_d, rem_d, dir_x_d, dir_y_d, first_step, first_acc, first_mag, first_cnt,
-     second_step, second_acc, second_mag, second_cnt} = 'x;
+     second_step, second_acc, second_mag, second_cnt, moved_a, moved_b, first_sum, kept_sum,
+     stepped_sum} = 'x;
     if (active) begin
       kpow_d   = kpow_q;
       acc_a_d  = acc_a_q;   acc_b_d  = acc_b_q;
@@ -150,10 +162,16 @@ module dda_circle #(
         rem_d    = kpow_load;
         dir_x_d  = dir_x_i;   dir_y_d  = dir_y_i;
       end else if (iterate) begin
-        {first_step, first_acc, first_mag, first_cnt} = half_step(
-            line_q, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0, mag_a_q, grow_a_q, cnt_a_q);
-        {second_step, second_acc, second_mag, second_cnt} = half_step(
-            line_q, kpow_q, acc_b_q, first_mag, first_cnt == '0, mag_b_q, grow_b_q, cnt_b_q);
+        moved_a   = mag_a_q + {{(IncWidth - 1){!grow_a_q}}, 1'b1};
+        moved_b   = mag_b_q + {{(IncWidth - 1){!grow_b_q}}, 1'b1};
+        first_sum = integrate(line_q, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0);
+        {first_step, first_acc, first_mag, first_cnt} =
+            settle(line_q, kpow_q, first_sum, moved_a, mag_a_q, cnt_a_q);
+        kept_sum    = integrate(line_q, kpow_q, acc_b_q, mag_a_q, cnt_a_q == '0);
+        stepped_sum = integrate(line_q, kpow_q, acc_b_q, line_q ? mag_a_q : moved_a,
+                                cnt_a_q == IncWidth'(1));
+        {second_step, second_acc, second_mag, second_cnt} = settle(
+            line_q, kpow_q, first_step ? stepped_sum : kept_sum, moved_b, mag_b_q, cnt_b_q);
         // Swap the roles: B went second, so it goes first in the next iteration.
         acc_a_d  = second_acc;  mag_a_d  = second_mag;  cnt_a_d  = second_cnt;
         acc_b_d  = first_acc;   mag_b_d  = first_mag;   cnt_b_d  = first_cnt;
