@@ -9,7 +9,7 @@
 // generator plays the N iterations in M / F clocks, as it plays the 2^k iterations of a
 // line (docs/circle-dda.md section 4). A failed radius check stops the dry run.
 // The dry run is a second dda_circle, one iteration per clock (SerialDryRun = 0), or the
-// bit-serial arc_dry_run.sv, 2W clocks per iteration on a fifth of the logic (1): the
+// bit-serial arc_dry_run.sv, 2W clocks per iteration for about 150 logic cells fewer (1): the
 // trade of docs/interpolator.md 3.5. The golden twin is sc_model/golden/arc_prepare.cpp.
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
 // high in that clock; otherwise the dry run and the check run from the next edges and

@@ -30,7 +30,7 @@ module interp_top #(
   // Width of feed_modulus_i.
   parameter int ModulusWidth   = 48,
   // An arc's dry run (arc_prepare.sv): 0 = a second circle DDA, one iteration per clock;
-  // 1 = bit-serial (arc_dry_run.sv), 2W clocks per iteration and about 200 logic cells
+  // 1 = bit-serial (arc_dry_run.sv), 2W clocks per iteration and about 150 logic cells
   // fewer at W = 16 (docs/interpolator.md 3.5 says when the slower dry run leaves gaps).
   parameter bit SerialDryRun   = 1'b0
 ) (

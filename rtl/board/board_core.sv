@@ -26,7 +26,7 @@ module board_core #(
   // to leave room for the interpolator on the part (12 MHz: >= 2930 baud, <= 21 us).
   parameter int DivWidth      = 12,
   parameter int StretchWidth  = 8,
-  // The arc's dry run bit-serial (interp_top's SerialDryRun): about 200 logic cells fewer;
+  // The arc's dry run bit-serial (interp_top's SerialDryRun): about 150 logic cells fewer;
   // it keeps up with arcs of up to one iteration per 2W clocks (375 000 per second at
   // 12 MHz and W = 16), above what the step stretchers let through on most arcs
   // (docs/interpolator.md 3.5).
