@@ -61,7 +61,7 @@ module arc_dry_run #(
   logic                active, first_bit, top_bit, below_k;
   logic                c_is_y, u_is_y, u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero;
   logic                mag_add, mag_sum, mag_cout, cnt_sum, cnt_cout, zrun_d, u_zero;
-  logic                addend, acc_sum, acc_cout, acc_bit, step, check;
+  logic                addend, acc_sum, acc_cout, acc_bit, step, check, finished;
   logic [IncWidth-1:0] half_modulus;
 
   assign active    = start_i || (run_i && busy_q);
@@ -77,7 +77,7 @@ module arc_dry_run #(
     // Used only while running: don't-care ('x) otherwise (no gates, no evaluation).
     {u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero, mag_add, mag_sum, mag_cout,
      cnt_sum, cnt_cout, zrun_d, u_zero, addend, acc_sum, acc_cout, acc_bit, step,
-     check} = 'x;
+     check, finished} = 'x;
     if (active && !start_i) begin
       // U's update: mag + 1, or + all ones (- 1), when pend; cnt + all ones (- 1).
       u_grow  = u_is_y ? grow_y_i : grow_x_i;
@@ -105,12 +105,13 @@ module arc_dry_run #(
       acc_bit = below_k && acc_sum;  // clearing bit k subtracts 2^k
       step    = acc_cout && !c_zero;
       // An even pass starts an iteration (U = C there): at clock k - 1, are both counts 0?
-      check   = top_bit && !half_q[0];
+      check    = top_bit && !half_q[0];
+      finished = check && u_zero && o_zero;
     end
   end
 
   assign done_o    = done_q;
-  assign iterate_o = active && !start_i && check && !(u_zero && o_zero);
+  assign iterate_o = active && !start_i && check && !finished;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -147,7 +148,7 @@ module arc_dry_run #(
       carry_cnt_q <= cnt_cout;
       zrun_q      <= zrun_d;
       if (top_bit) step_q <= step;
-      if (check && u_zero && o_zero) begin
+      if (finished) begin
         busy_q <= 1'b0;
         done_q <= 1'b1;
       end

@@ -14,22 +14,34 @@
 namespace ncinterp::sweep {
 namespace {
 
-using RtlVariantHeavy = ncinterp::test::ScratchDirTest;
 using RtlVariant = ncinterp::test::ScratchDirTest;
 
+// The variant tests' setting: the 50 mm circle's tape at W (chords, or arc blocks), measured
+// on the golden model by the sweep's own code at a fast reader and a high feed.
+class RtlVariantHeavy : public ncinterp::test::ScratchDirTest {
+ protected:
+  RtlVariantSetup setup() const {
+    RtlVariantSetup s = default_rtl_variant_setup(std::string(NCINTERP_SWEEP_TEST_WORK) + "/variant-cache");
+    s.reader_cps = 100000;
+    return s;
+  }
+  InputResult circle_tape(unsigned width, bool arcs, const std::string& tape) {
+    MeasureSetup m;
+    m.first_stage.feed_mm_min = 20000;
+    m.first_stage.arcs_circle = arcs;
+    m.reader_cps = setup().reader_cps;
+    const std::string input = test::example("contours/circle_r50.json");
+    const SweepInput circle{input, firststage::read_contour(input, firststage::InputOptions{})};
+    return measure_input(circle, width, m, tape);
+  }
+};
+
 TEST_F(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
-  RtlVariantSetup s = default_rtl_variant_setup(std::string(NCINTERP_SWEEP_TEST_WORK) + "/variant-cache");
-  s.reader_cps = 100000;
-  MeasureSetup m;
-  m.first_stage.feed_mm_min = 20000;
-  m.reader_cps = s.reader_cps;
-  const std::string input = test::example("contours/circle_r50.json");
-  const SweepInput circle{input, firststage::read_contour(input, firststage::InputOptions{})};
   const std::string tape = path("circle_w8.tape");
-  const InputResult in = measure_input(circle, 8, m, tape);
+  const InputResult in = circle_tape(8, false, tape);
   ASSERT_TRUE(in.measured()) << in.failure;
 
-  const RtlResult r = run_rtl_variant(s, 8, {tape});
+  const RtlResult r = run_rtl_variant(setup(), 8, {tape});
   EXPECT_TRUE(r.ran);
   EXPECT_TRUE(r.all_match) << r.summary;
   // The variant ran as many clocks as the golden model under the checker: the same run.
@@ -41,19 +53,12 @@ TEST_F(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
 // take 2WN clocks to prepare: the run is longer than the parallel dry run's, which shows
 // that the variant is the serial one.
 TEST_F(RtlVariantHeavy, SerialDryRunMatchesTheGoldenModelOnEveryClock) {
-  RtlVariantSetup s = default_rtl_variant_setup(std::string(NCINTERP_SWEEP_TEST_WORK) + "/variant-cache");
-  s.reader_cps = 100000;
-  s.serial_dry_run = true;
-  MeasureSetup m;
-  m.first_stage.feed_mm_min = 20000;
-  m.first_stage.arcs_circle = true;
-  m.reader_cps = s.reader_cps;
-  const std::string input = test::example("contours/circle_r50.json");
-  const SweepInput circle{input, firststage::read_contour(input, firststage::InputOptions{})};
   const std::string tape = path("circle_arcs_w16.tape");
-  const InputResult in = measure_input(circle, 16, m, tape);
+  const InputResult in = circle_tape(16, true, tape);
   ASSERT_TRUE(in.measured()) << in.failure;
 
+  RtlVariantSetup s = setup();
+  s.serial_dry_run = true;
   const RtlResult r = run_rtl_variant(s, 16, {tape});
   EXPECT_TRUE(r.ran);
   EXPECT_TRUE(r.all_match) << r.summary;
