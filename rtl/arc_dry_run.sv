@@ -22,7 +22,7 @@
 // Timing: start_i loads the arc at an edge; iteration j (from 0) is marked at edge 2jW + k
 // after it, and done_o rises after edge 2NW + k. run_i low stops it (a failed radius check);
 // the inputs must stay constant from the start edge while it runs (the decoder's held
-// block). interp_top's SerialDryRun chooses it (the board does); the default dry run is a
+// block). interp_top's BitSerial chooses it (the board does); the default dry run is a
 // second dda_circle, one iteration per clock (docs/bit-widths.md section 6 has both areas).
 module arc_dry_run #(
   parameter int IncWidth = 16,

@@ -8,18 +8,18 @@
 // over, S = F * N (N = the block's iteration count) goes with the block, and the feed
 // generator plays the N iterations in M / F clocks, as it plays the 2^k iterations of a
 // line (docs/circle-dda.md section 4). A failed radius check stops the dry run.
-// The dry run is a second dda_circle, one iteration per clock (SerialDryRun = 0), or the
+// The dry run is a second dda_circle, one iteration per clock (BitSerial = 0), or the
 // bit-serial arc_dry_run.sv, 2W clocks per iteration for about 150 logic cells fewer (1): the
 // trade of docs/interpolator.md 3.5. The golden twin is sc_model/golden/arc_prepare.cpp.
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
 // high in that clock; otherwise the dry run and the check run from the next edges and
 // done_o rises in the clock after the later of the two: max(N, C) clocks after the start
-// edge, max(2WN + k, C) with SerialDryRun. done_o, the error and iterate_o are
+// edge, max(2WN + k, C) with BitSerial. done_o, the error and iterate_o are
 // combinational from registers (and the held block); the decoder acts on them at that edge.
 module arc_prepare #(
   parameter int IncWidth  = 16,
   parameter int KWidth    = $clog2(IncWidth + 1),
-  parameter bit SerialDryRun = 1'b0
+  parameter bit BitSerial = 1'b0
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -63,7 +63,7 @@ module arc_prepare #(
     .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
   );
 
-  if (SerialDryRun) begin : g_serial_dry_run
+  if (BitSerial) begin : g_serial_dry_run
     arc_dry_run #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
       .clk_i, .rst_ni, .start_i(start), .run_i(running_q), .k_i(k),
       .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y),

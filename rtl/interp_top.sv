@@ -29,10 +29,12 @@ module interp_top #(
   parameter int OffsetWidth    = 32,
   // Width of feed_modulus_i.
   parameter int ModulusWidth   = 48,
-  // An arc's dry run (arc_prepare.sv): 0 = a second circle DDA, one iteration per clock;
-  // 1 = bit-serial (arc_dry_run.sv), 2W clocks per iteration and about 150 logic cells
-  // fewer at W = 16 (docs/interpolator.md 3.5 says when the slower dry run leaves gaps).
-  parameter bit SerialDryRun   = 1'b0
+  // The decoder's per-block arithmetic: 0 = parallel; 1 = bit-serial, the board's choice
+  // (docs/interpolator.md 3.2 and 3.5): an arc's dry run on arc_dry_run.sv, 2W clocks per
+  // iteration instead of a second circle DDA, and each digit's x10 + d a pass of NumWidth
+  // clocks on a one-bit adder (tape_word_parser.sv). Fewer logic cells (docs/bit-widths.md
+  // section 6); 3.5 says when the slower dry run leaves gaps.
+  parameter bit BitSerial   = 1'b0
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -129,7 +131,7 @@ module interp_top #(
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
-    .SerialDryRun(SerialDryRun)
+    .BitSerial(BitSerial)
   ) u_decoder (
     .clk_i, .rst_ni,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,

@@ -20,9 +20,11 @@
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
 // a motion block puts the decoder in PREPARE: a line for k + 1 clocks (S = F at the LF,
 // doubled at the next k edges, HOLD at the one after), an arc until arc_prepare is done
-// (max(N, C) clocks, or max(2WN + k, C) with SerialDryRun; C = (5W + 4)(2W + 4) for the
-// radius check), then HOLD or ERROR; the
-// block buffer takes a held block at the first edge where it is empty (blk_ready_i).
+// (max(N, C) clocks, or max(2WN + k, C) with BitSerial; C = (5W + 4)(2W + 4) for the
+// radius check), then HOLD or ERROR; the block buffer takes a held block at the first edge
+// where it is empty (blk_ready_i). With BitSerial a digit processed at edge e holds the next
+// frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the word's limit is
+// an error at edge e + NumWidth).
 // tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
@@ -37,8 +39,9 @@ module tape_decoder #(
   parameter int SeqWidth       = 20,
   // Frame offset counter width (error reports).
   parameter int OffsetWidth    = 32,
-  // The arc's dry run: a parallel circle DDA (0) or bit-serial (1), arc_prepare.sv.
-  parameter bit SerialDryRun   = 1'b0
+  // The per-block arithmetic in parallel (0) or bit-serial (1, the board's choice): the
+  // arc's dry run (arc_prepare.sv) and each digit's x10 + d (tape_word_parser.sv).
+  parameter bit BitSerial      = 1'b0
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -107,6 +110,8 @@ module tape_decoder #(
   logic [OffsetWidth-1:0] word_err_offset, word_offset;
   logic [6:0]             word_letter;
   logic [NumWidth-1:0]    word_value;
+  // BitSerial: a digit's pass runs (no frame is processed), and its limit check's verdict.
+  logic                   word_busy, word_busy_next, word_value_err;
 
   // Block assembly. n_q is the last N read (never cleared: a block without N carries the
   // previous one); motion_q (interp_pkg::motion_e) and feed_q are modal (G01 and "no feed"
@@ -164,9 +169,9 @@ module tape_decoder #(
 
   tape_frame_input #(.OffsetWidth(OffsetWidth)) u_frame (
     .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
-    .accept_i(state_q != StHold && !preparing && state_q != StError),
+    .accept_i(state_q != StHold && !preparing && state_q != StError && !word_busy),
     .error_next_i(state_next == StError),
-    .busy_next_i(state_next == StHold || state_next == StPrepare),
+    .busy_next_i(state_next == StHold || state_next == StPrepare || word_busy_next),
     .take_o(take), .char_o(ch), .parity_err_o(parity_err), .offset_o(offset),
     .waiting_o(waiting), .tape_ended_o(tape_end_q)
   );
@@ -175,13 +180,15 @@ module tape_decoder #(
 
   tape_word_parser #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
-    .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth), .NumWidth(NumWidth)
+    .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
+    .NumWidth(NumWidth), .BitSerial(BitSerial)
   ) u_word (
     .clk_i, .rst_ni, .char_valid_i(body_char), .char_i(ch), .offset_i(offset),
     .err_o(word_err), .err_code_o(word_err_code), .err_offset_o(word_err_offset),
     .delimiter_o(delimiter), .word_end_o(word_end), .word_letter_o(word_letter),
     .word_value_o(word_value), .word_neg_o(word_neg), .word_offset_o(word_offset),
-    .word_start_o(word_start)
+    .word_start_o(word_start), .busy_o(word_busy), .busy_next_o(word_busy_next),
+    .value_err_o(word_value_err)
   );
 
   assign preparing = state_q == StPrepare;
@@ -189,7 +196,7 @@ module tape_decoder #(
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
-  assign update = take || preparing || state_q == StHold || tape_cut;
+  assign update = take || preparing || state_q == StHold || tape_cut || word_busy;
   assign state_next = update ? state_d : state_q;
 
   always_comb begin
@@ -338,6 +345,13 @@ module tape_decoder #(
             default: ;  // StHold, StPrepare, StError: no frame is processed
           endcase
         end
+      end else if (word_busy) begin
+        // BitSerial: a digit's pass; at its last edge, over the word's limit or not.
+        if (word_value_err) begin
+          fail = 1'b1;
+          fail_code = interp_pkg::ErrValueTooWide;
+          fail_offset = offset - 1'b1;  // the digit, the last frame processed
+        end
       end else if (preparing && !in_arc) begin
         // A line: S = F << k, one doubling per clock (S < 2^StepWidth: F < 2^FeedWidth,
         // k <= W).
@@ -391,7 +405,7 @@ module tape_decoder #(
 
   // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N (the
   // decoder adds F at each, above).
-  arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth), .SerialDryRun(SerialDryRun)) u_arc (
+  arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth), .BitSerial(BitSerial)) u_arc (
     .clk_i, .rst_ni, .run_i(in_arc),
     .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),

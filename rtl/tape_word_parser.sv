@@ -13,6 +13,11 @@
 // digits for X Y I J (FeedFracDigits for F), none for N G M, so no scaling is ever needed.
 // A digit is checked against the word's limit 2^w - 1 in NumWidth + 4 bits (num * 10 + 9
 // cannot overflow them): one OR over the high bits, and <= 99 for the G and M codes.
+// With BitSerial (the board's choice), x10 + d is not one adder but a pass of NumWidth
+// clocks on a one-bit adder (see "Bit-serial digit pass" below): the digit's syntax is
+// checked at its edge, its limit at the pass's last edge (value_err_o), and no character is
+// taken while the pass runs (busy_o): a frame comes every ~1000 clocks from a reader at
+// 1000 characters/s and 1 MHz, so the pass is hidden.
 // The block assembly (tape_decoder.sv) gives the words their meaning; after an error the
 // decoder stops, and this module's registers no longer matter.
 // Golden twin: the section "Word parser" of GoldenTapeDecoder
@@ -26,7 +31,9 @@ module tape_word_parser #(
   parameter int OffsetWidth    = 32,
   // Width of the number read: the widest register a word fills (IncWidth, FeedWidth,
   // SeqWidth) and at least 7 bits (the G and M codes).
-  parameter int NumWidth       = 32
+  parameter int NumWidth       = 32,
+  // x10 + d on one adder of NumWidth + 4 bits per digit (0) or bit-serially (1).
+  parameter bit BitSerial      = 1'b0
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -48,7 +55,13 @@ module tape_word_parser #(
   output logic [NumWidth-1:0]    word_value_o,
   output logic                   word_neg_o,
   output logic [OffsetWidth-1:0] word_offset_o,
-  output logic                   word_start_o
+  output logic                   word_start_o,
+  // BitSerial: a digit's pass runs at this edge (no character is taken), and will after it;
+  // at the pass's last edge, the number went over its word's limit (ErrValueTooWide, at the
+  // digit). Constant 0 without BitSerial.
+  output logic                   busy_o,
+  output logic                   busy_next_o,
+  output logic                   value_err_o
 );
 
   localparam int WideWidth = NumWidth + 4;
@@ -128,7 +141,8 @@ module tape_word_parser #(
       endcase
       word_complete = fractional_word ? (num_state_q == NumFrac && frac_count_q == frac_limit)
                                       : (num_state_q == NumInt);
-      num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(char_i[3:0]);  // *10 + d
+      if (!BitSerial)
+        num_next = {1'b0, num_q, 3'b000} + {2'b00, num_q, 1'b0} + WideWidth'(char_i[3:0]);  // *10 + d
       delimiter_o  = !(is_blank || is_digit || is_sign || is_dot);
       word_end_o   = delimiter_o && word_q != WordNone && word_complete;
       word_start_o = delimiter_o && is_letter;
@@ -145,12 +159,13 @@ module tape_word_parser #(
       if (is_digit) begin
         if (word_q == WordNone || (num_state_q == NumFrac && frac_count_q == frac_limit)) begin
           err_o = 1'b1;  // a digit outside a word, or one fraction digit too many
-        end else if ((num_next & ~limit) != '0 ||
-                     ((word_q == WordG || word_q == WordM) && num_next[6:0] > CodeLimit[6:0])) begin
+        end else if (!BitSerial && ((num_next & ~limit) != '0 ||
+                     ((word_q == WordG || word_q == WordM) && num_next[6:0] > CodeLimit[6:0]))) begin
           err_o = 1'b1;  // above the word's limit: a mask 2^w - 1 (one OR of the high bits), or 99
           err_code_o = interp_pkg::ErrValueTooWide;
         end else begin
-          num_d = num_next[NumWidth-1:0];
+          // BitSerial: num_q is unchanged here; the digit's pass starts (start_pass).
+          if (!BitSerial) num_d = num_next[NumWidth-1:0];
           if (num_state_q == NumFrac) frac_count_d = frac_count_q + 1'b1;
           else num_state_d = NumInt;
         end
@@ -187,18 +202,98 @@ module tape_word_parser #(
     if (!rst_ni) begin
       word_q        <= WordNone;
       num_state_q   <= NumStart;
-      num_q         <= '0;
       neg_q         <= 1'b0;
       frac_count_q  <= '0;
       word_offset_q <= '0;
     end else if (char_valid_i) begin
       word_q        <= word_d;
       num_state_q   <= num_state_d;
-      num_q         <= num_d;
       neg_q         <= neg_d;
       frac_count_q  <= frac_count_d;
       word_offset_q <= word_offset_d;
     end
+  end
+
+  // num_q: set by a character (char_valid_i), or shifted by a digit's pass (BitSerial).
+  logic pass_shift, pass_bit;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) num_q <= '0;
+    else if (char_valid_i) num_q <= num_d;
+    else if (pass_shift) num_q <= {pass_bit, num_q[NumWidth-1:1]};
+  end
+
+  // Bit-serial digit pass (BitSerial): num * 10 + d = (num << 3) + (num << 1) + d, LSB first.
+  // Schedule: the digit's edge e (start_pass) loads the digit and clears the adder; edge
+  // e + 1 + i (i = 0 .. NumWidth - 1) forms bit i of the result from bit i of the digit,
+  // num's bits i - 1 and i - 3 (hist_q: the bits num_q has shifted out) and a carry of 0 to
+  // 2, and shifts it in at num_q's top, so after NumWidth edges num_q holds the new number
+  // in place. A result bit at or above the word's width sets over_q; what is left above
+  // bit NumWidth - 1 (the carry and the old number's three top bits) must be 0; G and M
+  // also compare the low 7 bits with 99 (LSB first: gt_q). The last edge (e + NumWidth)
+  // reports value_err_o; the decoder takes no character from e + 1 to e + NumWidth.
+  if (BitSerial) begin : g_serial_digit
+    localparam int BitWidth = $clog2(NumWidth);
+    localparam logic [6:0] CodeMax = 7'd99;
+    logic [BitWidth-1:0] bit_q;
+    logic [3:0]          digit_q;
+    logic [2:0]          hist_q;   // num's bits i - 1, i - 2, i - 3 at [0], [1], [2]
+    logic [1:0]          carry_q;
+    logic                busy_q, over_q, gt_q, gt_d, start_pass, last, past_width;
+    logic [2:0]          sum;
+    logic [BitWidth:0]   width;    // the word's register width (7 for G and M)
+
+    assign start_pass = char_valid_i && is_digit && !err_o;
+    assign last       = bit_q == BitWidth'(NumWidth - 1);
+    always_comb begin
+      unique case (word_q)
+        WordN:        width = (BitWidth + 1)'(SeqWidth);
+        WordG, WordM: width = (BitWidth + 1)'(7);
+        WordF:        width = (BitWidth + 1)'(FeedWidth);
+        default:      width = (BitWidth + 1)'(IncWidth);
+      endcase
+    end
+    assign sum        = {2'b00, hist_q[0]} + {2'b00, hist_q[2]} + {2'b00, digit_q[0]} +
+                        {1'b0, carry_q};
+    assign past_width = {1'b0, bit_q} >= width;
+    // Result bits 0..6 against 99: greater at this bit, or equal here and greater below.
+    assign gt_d = bit_q < BitWidth'(7) ? (sum[0] && !CodeMax[bit_q[2:0]]) ||
+                                         (sum[0] == CodeMax[bit_q[2:0]] && gt_q)
+                                       : gt_q;
+
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        busy_q <= 1'b0;
+        {bit_q, digit_q, hist_q, carry_q, over_q, gt_q} <= '0;
+      end else if (start_pass) begin
+        busy_q  <= 1'b1;
+        bit_q   <= '0;
+        digit_q <= char_i[3:0];
+        {hist_q, carry_q, over_q, gt_q} <= '0;
+      end else if (busy_q) begin
+        bit_q   <= bit_q + 1'b1;
+        digit_q <= digit_q >> 1;
+        hist_q  <= {hist_q[1:0], num_q[0]};
+        carry_q <= sum[2:1];
+        over_q  <= over_q || (sum[0] && past_width);
+        gt_q    <= gt_d;
+        if (last) busy_q <= 1'b0;
+      end
+    end
+
+    assign pass_shift  = busy_q;
+    assign pass_bit    = sum[0];
+    assign busy_o      = busy_q;
+    assign busy_next_o = start_pass || (busy_q && !last);
+    assign value_err_o = busy_q && last &&
+                         (over_q || (sum[0] && past_width) || sum[2:1] != '0 ||
+                          {hist_q[1:0], num_q[0]} != '0 ||
+                          ((word_q == WordG || word_q == WordM) && gt_d));
+  end else begin : g_parallel_digit
+    assign pass_shift  = 1'b0;
+    assign pass_bit    = 1'b0;
+    assign busy_o      = 1'b0;
+    assign busy_next_o = 1'b0;
+    assign value_err_o = 1'b0;
   end
 
   // The word handed over at a delimiter: its letter, as on tape.

@@ -2,10 +2,10 @@
 # Gap clocks against the tape reader's speed: plays each tape in lock step (verilated RTL
 # and golden model, `ncinterp cosim`) at each reader speed and prints the clocks in which
 # the player waited for a block (busy low between blocks), which must be 0 for the
-# machine to keep its programmed feed. With --serial-dry-run first, the tapes play as on
-# the board (interp_top's SerialDryRun: an arc's dry run bit-serial) on the golden model
-# (`ncinterp check --serial-dry-run`; the lock step of that RTL is the rtl_variant test's).
-# Usage: reader_gaps.sh [--serial-dry-run] [--clock-hz HZ] NCINTERP "CPS..." TAPE...
+# machine to keep its programmed feed. With --bit-serial first, the tapes play as on
+# the board (interp_top's BitSerial: an arc's dry run bit-serial) on the golden model
+# (`ncinterp check --bit-serial`; the lock step of that RTL is the rtl_variant test's).
+# Usage: reader_gaps.sh [--bit-serial] [--clock-hz HZ] NCINTERP "CPS..." TAPE...
 #   e.g. bench/sim/reader_gaps.sh build/ncinterp "1000 500 200 100" examples/*.nc
 # Idea: a block is ready when its last frame has been read (and, for an arc, prepared);
 # it plays without a gap when that happens before the block ahead of it has finished
@@ -14,7 +14,7 @@ set -euo pipefail
 serial=0 clock_hz=1000000
 while [[ ${1:-} == --* ]]; do
   case $1 in
-    --serial-dry-run) serial=1; shift ;;
+    --bit-serial) serial=1; shift ;;
     --clock-hz) clock_hz=$2; shift 2 ;;
     *) echo "reader_gaps.sh: unknown option $1" >&2; exit 1 ;;
   esac
@@ -25,7 +25,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 play() {  # TAPE CPS: a JSON report with cycles, blocks and the gap clocks
   if ((serial)); then
-    "$ncinterp" check "$1" --serial-dry-run --clock-hz "$clock_hz" --reader-cps "$2" \
+    "$ncinterp" check "$1" --bit-serial --clock-hz "$clock_hz" --reader-cps "$2" \
       --report "$work/r.json"
   else
     "$ncinterp" cosim "$1" --clock-hz "$clock_hz" --reader-cps "$2" --report "$work/r.json"

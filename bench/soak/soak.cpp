@@ -24,7 +24,7 @@ struct Args {
   double seconds = 0.5;
   std::string dump;
   bool no_arcs = false;
-  bool serial_dry_run = false;
+  bool bit_serial = false;
 };
 
 std::string tape_command(const regression::Case& c, const std::string& input) {
@@ -67,7 +67,7 @@ void dump_case(const std::string& dir, const regression::Case& c, const regressi
                   "ncinterp check %s.tape --contour %s --tol %g --blu %g --width %u --reader-cps %g%s "
                   "--start %.6f,%.6f%s --svg %s.svg --report %s.report.json\n",
                   c.name.c_str(), in.file_name.c_str(), c.first_stage.tol_mm, c.first_stage.blu_mm,
-                  c.first_stage.width, c.check.reader_cps, c.check.serial_dry_run ? " --serial-dry-run" : "",
+                  c.first_stage.width, c.check.reader_cps, c.check.bit_serial ? " --bit-serial" : "",
                   s.x * out->blu_mm, s.y * out->blu_mm,
                   c.first_stage.cutter_radius_mm > 0
                       ? (" --cutter-radius " + std::to_string(c.first_stage.cutter_radius_mm) +
@@ -94,12 +94,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--seconds", a.seconds, "machine time of each contour (sets the feed)")->capture_default_str();
   app.add_option("--dump", a.dump, "directory for failing cases (input, tape, report, commands)");
-  app.add_flag("--serial-dry-run", a.serial_dry_run,
-               "play as the board does: an arc's dry run bit-serial (golden engine only)");
+  app.add_flag("--bit-serial", a.bit_serial,
+               "play as the board does: the arc's dry run and the digits bit-serial (golden engine only)");
   app.add_flag("--no-arcs", a.no_arcs, "never cut arcs as G02/G03 blocks (--arcs circle); by default half the contours with arcs are");
   CLI11_PARSE(app, argc, argv);
-  if (a.serial_dry_run && a.engine != "golden") {
-    std::fprintf(stderr, "ncinterp_soak: --serial-dry-run needs --engine golden (the verilated RTL "
+  if (a.bit_serial && a.engine != "golden") {
+    std::fprintf(stderr, "ncinterp_soak: --bit-serial needs --engine golden (the verilated RTL "
                          "has the parallel dry run)\n");
     return 1;
   }
@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
       std::printf("%llu: FAIL generating the case: %s\n", static_cast<unsigned long long>(seed), e.what());
       continue;
     }
-    c.check.serial_dry_run = a.serial_dry_run;
+    c.check.bit_serial = a.bit_serial;
     for (EngineKind engine : engines) {
       c.check.engine = engine;
       if (engine == EngineKind::kRtl &&

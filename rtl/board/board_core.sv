@@ -26,11 +26,12 @@ module board_core #(
   // to leave room for the interpolator on the part (12 MHz: >= 2930 baud, <= 21 us).
   parameter int DivWidth      = 12,
   parameter int StretchWidth  = 8,
-  // The arc's dry run bit-serial (interp_top's SerialDryRun): about 150 logic cells fewer;
-  // it keeps up with arcs of up to one iteration per 2W clocks (375 000 per second at
-  // 12 MHz and W = 16), above what the step stretchers let through on most arcs
-  // (docs/interpolator.md 3.5).
-  parameter bit SerialDryRun  = 1'b1
+  // The decoder's per-block arithmetic bit-serial (interp_top's BitSerial): fewer logic
+  // cells; the dry run keeps up with arcs of up to one iteration per 2W clocks (375 000 per
+  // second at 12 MHz and W = 16), above what the step stretchers let through on most arcs
+  // (docs/interpolator.md 3.5), and a digit's pass (NumWidth clocks) is hidden between
+  // the UART's frames.
+  parameter bit BitSerial  = 1'b1
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -108,7 +109,7 @@ module board_core #(
   assign frame_valid = fifo_valid && !eot && !tape_end_q;
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
-  interp_top #(.SerialDryRun(SerialDryRun)) u_interp (
+  interp_top #(.BitSerial(BitSerial)) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i,
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),

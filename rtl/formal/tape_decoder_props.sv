@@ -7,11 +7,12 @@
 // - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
 //   more than K consecutive clocks unless the decoder is in error or holds a block. K =
 //   max(D, (5W + 4)(2W + 4)) + 2 covers an arc's preparation (its dry run, D = 2^(W+1) >
-//   N clocks, or 2W 2^(W+1) + W with SerialDryRun, and the bit-serial radius check,
+//   N clocks, or 2W 2^(W+1) + W with BitSerial, and the bit-serial radius check,
 //   docs/interpolator.md 3.5) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
 //   frames, or an error, and nothing else stalls the reader;
 // - ap_line_ready_bounded: while the modal motion is G01 (so no arc is prepared), the bound
-//   is K_line = W + 3: a line's k + 1 doublings and the clocks around them.
+//   is K_line = W + 3: a line's k + 1 doublings and the clocks around them; with BitSerial
+//   at least NumWidth + 1, a digit's x10 + d pass and the clock after it.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
 // preparation's internals (which the area redesign changes). The CI depth (16 clocks)
@@ -25,7 +26,7 @@ module tape_decoder_props #(
   parameter int FW = 2,
   parameter int NW = 2,
   parameter int OW = 5,
-  parameter bit SerialDryRun = 1'b0
+  parameter bit BitSerial = 1'b0
 ) (
   input logic       clk_i,
   input logic       rst_ni,
@@ -38,9 +39,12 @@ module tape_decoder_props #(
   localparam int KWidth = $clog2(W + 1);
   localparam int SW = FW + W + 1;
   localparam int Check = (5 * W + 4) * (2 * W + 4);  // ArcRadiusCheck::clocks
-  localparam int Dry = SerialDryRun ? 2 * W * (1 << (W + 1)) + W : 1 << (W + 1);
+  localparam int Dry = BitSerial ? 2 * W * (1 << (W + 1)) + W : 1 << (W + 1);
   localparam int K = (Dry > Check ? Dry : Check) + 2;
-  localparam int KLine = W + 3;
+  localparam int NumWidth = (W > FW ? W : FW) > (NW > 7 ? NW : 7) ? (W > FW ? W : FW)
+                                                                   : (NW > 7 ? NW : 7);
+  localparam int KDigit = BitSerial ? NumWidth + 1 : 0;
+  localparam int KLine = W + 3 > KDigit ? W + 3 : KDigit;
   localparam int LowWidth = $clog2(K + 2);
   localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
 
@@ -56,7 +60,7 @@ module tape_decoder_props #(
 
   tape_decoder #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .SeqWidth(NW),
-    .OffsetWidth(OW), .SerialDryRun(SerialDryRun)
+    .OffsetWidth(OW), .BitSerial(BitSerial)
   ) u_dut (
     .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
     .blk_valid_o(blk_valid), .blk_ready_i, .blk_n_o(n), .blk_motion_o(motion),

@@ -17,8 +17,8 @@ module interp_ice40_top #(
   parameter int SeqWidth       = 17,   // N <= 99 999
   // The board's clock (the iCEstick has a 12 MHz oscillator).
   parameter longint ClockHz    = 12_000_000,
-  // The arc's dry run bit-serial, as on the board (rtl/board/board_core.sv).
-  parameter bit SerialDryRun   = 1'b1
+  // The per-block arithmetic bit-serial, as on the board (rtl/board/board_core.sv).
+  parameter bit BitSerial   = 1'b1
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -53,7 +53,7 @@ module interp_ice40_top #(
   interp_top #(
     .IncWidth(IncWidth), .FeedWidth(FeedWidth), .FeedFracDigits(FeedFracDigits),
     .PosWidth(16), .SeqWidth(SeqWidth), .OffsetWidth(16), .ModulusWidth(ModulusWidth),
-    .SerialDryRun(SerialDryRun)
+    .BitSerial(BitSerial)
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(ModulusWidth'(FeedModulus)),

@@ -30,7 +30,7 @@ uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
     const LineSchedule s(big, 0, b.tape.feed, cfg.feed_modulus);
     total += std::max(s.duration(), 4 * s.iterations() + 4) + 4;
     if (b.is_arc())
-      total += ArcPrepare::clocks(cfg.inc_width, cfg.serial_dry_run, 4 * s.iterations(), s.k() + 2);
+      total += ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, 4 * s.iterations(), s.k() + 2);
   }
   return total + total / 8;
 }
@@ -85,7 +85,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
 
   InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
   cfg.pos_width = setup.pos_width;
-  cfg.serial_dry_run = setup.serial_dry_run;
+  cfg.bit_serial = setup.bit_serial;
   if (contour) {
     ReferenceOptions ro;
     ro.blu_mm = out.blu_mm;

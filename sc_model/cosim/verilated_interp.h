@@ -26,7 +26,7 @@ class VerilatedInterp {
   // The RTL is verilated with its default parameters: cfg must have them (only
   // feed_modulus, an input port, is free). A width variant (sw/tools/sweep/rtl_variant/: the
   // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W, one with
-  // the serial dry run (-GSerialDryRun=1'b1) with NCINTERP_RTL_SERIAL_DRY_RUN.
+  // the bit-serial decoder (-GBitSerial=1'b1) with NCINTERP_RTL_BIT_SERIAL.
   explicit VerilatedInterp(const InterpConfig& cfg)
       : context_(std::make_unique<VerilatedContext>()),
         model_(std::make_unique<Model>(context_.get(), kScope)),
@@ -35,8 +35,8 @@ class VerilatedInterp {
 #ifdef NCINTERP_RTL_INC_WIDTH
     rtl.inc_width = NCINTERP_RTL_INC_WIDTH;
 #endif
-#ifdef NCINTERP_RTL_SERIAL_DRY_RUN
-    rtl.serial_dry_run = true;
+#ifdef NCINTERP_RTL_BIT_SERIAL
+    rtl.bit_serial = true;
 #endif
     if (!cfg.same_parameters(rtl))
       throw std::invalid_argument(

@@ -4,8 +4,8 @@
 
 namespace ncinterp {
 
-ArcPrepare::ArcPrepare(unsigned inc_width, bool serial_dry_run)
-    : inc_width_(inc_width), serial_(serial_dry_run), serial_dry_(inc_width), radius_(inc_width) {
+ArcPrepare::ArcPrepare(unsigned inc_width, bool bit_serial)
+    : inc_width_(inc_width), serial_(bit_serial), serial_dry_(inc_width), radius_(inc_width) {
   reset();
 }
 

@@ -7,7 +7,7 @@
 // N: the decoder adds F at each iteration it marks, so the block carries S = F * N, and the
 // feed generator plays its N iterations in M / F clocks, like the 2^k iterations of a line
 // (docs/circle-dda.md section 4). The dry run is a CircleDda, one iteration per clock, or
-// with SerialDryRun the bit-serial ArcDryRun, 2W clocks per iteration. Both run in
+// with BitSerial the bit-serial ArcDryRun, 2W clocks per iteration. Both run in
 // parallel with the check; a failed radius check stops the dry run.
 #pragma once
 #include <algorithm>
@@ -23,13 +23,13 @@ namespace ncinterp {
 
 class ArcPrepare {
  public:
-  ArcPrepare(unsigned inc_width, bool serial_dry_run);
+  ArcPrepare(unsigned inc_width, bool bit_serial);
 
   void reset();
 
   // Clocks from the start edge of a good arc of n iterations (bit length k) to done.
-  static uint64_t clocks(unsigned inc_width, bool serial_dry_run, uint64_t n, unsigned k) {
-    const uint64_t dry = serial_dry_run ? ArcDryRun::clocks(inc_width, n, k) : n;
+  static uint64_t clocks(unsigned inc_width, bool bit_serial, uint64_t n, unsigned k) {
+    const uint64_t dry = bit_serial ? ArcDryRun::clocks(inc_width, n, k) : n;
     return std::max(dry, ArcRadiusCheck::clocks(inc_width)) + 1;
   }
 
@@ -50,7 +50,7 @@ class ArcPrepare {
 
 private:
   unsigned inc_width_;
-  bool serial_;             // SerialDryRun: serial_dry_ runs, else dry_
+  bool serial_;             // BitSerial: serial_dry_ runs, else dry_
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   ArcGeometry g_;           // of the arc being prepared, from its start edge

@@ -26,7 +26,7 @@ struct InterpConfig {
   unsigned seq_width = 20;        // SeqWidth
   unsigned offset_width = 32;     // OffsetWidth
   unsigned modulus_width = 48;    // ModulusWidth
-  bool serial_dry_run = false;    // SerialDryRun: an arc's dry run bit-serial (ArcDryRun)
+  bool bit_serial = false;        // BitSerial: the arc's dry run (ArcDryRun) and x10 + d bit-serial
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
 
@@ -37,7 +37,7 @@ struct InterpConfig {
            feed_width == o.feed_width && feed_frac_digits == o.feed_frac_digits &&
            pos_width == o.pos_width && seq_width == o.seq_width &&
            offset_width == o.offset_width && modulus_width == o.modulus_width &&
-           serial_dry_run == o.serial_dry_run;
+           bit_serial == o.bit_serial;
   }
 
   static uint64_t feed_modulus_for(double clock_hz, unsigned feed_frac_digits) {

@@ -3,6 +3,8 @@
 // decision (same priorities, same offsets), in their three sections.
 #include "tape_decoder.h"
 
+#include <algorithm>
+
 namespace ncinterp {
 
 namespace {
@@ -19,13 +21,15 @@ bool odd_parity(uint8_t frame) { return __builtin_parity(frame) != 0; }
 }  // namespace
 
 GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
-    : frac_digits_(cfg.frac_digits),
+    : bit_serial_(cfg.bit_serial),
+      num_width_(std::max({cfg.inc_width, cfg.feed_width, cfg.seq_width, 7u})),
+      frac_digits_(cfg.frac_digits),
       feed_frac_digits_(cfg.feed_frac_digits),
       inc_limit_(low_mask(cfg.inc_width)),
       feed_limit_(low_mask(cfg.feed_width)),
       seq_limit_(low_mask(cfg.seq_width)),
       offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
-      arc_(cfg.inc_width, cfg.serial_dry_run) {}
+      arc_(cfg.inc_width, cfg.bit_serial) {}
 
 void GoldenTapeDecoder::reset() {
   state_ = State::kLeader;
@@ -40,6 +44,8 @@ void GoldenTapeDecoder::reset() {
   neg_ = false;
   frac_count_ = 0;
   word_offset_ = 0;
+  digit_pass_ = 0;
+  digit_over_ = false;
   block_ = DecodedBlock{};
   block_.motion = 1;
   block_.feed = 0;
@@ -57,9 +63,12 @@ void GoldenTapeDecoder::reset() {
 
 void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
   const bool process = in_valid_ && state_ != State::kHold && state_ != State::kPrepare &&
-                       state_ != State::kError;
+                       state_ != State::kError && digit_pass_ == 0;
   if (process) {
     process_frame(in_frame_);
+  } else if (digit_pass_ > 0) {  // a digit's pass (BitSerial); its verdict at the last edge
+    if (--digit_pass_ == 0 && digit_over_)
+      fail(TapeError::kValueTooWide, (frame_count_ - 1) & offset_mask_);  // the digit
   } else if (state_ == State::kPrepare) {
     prepare_edge();
   } else if (state_ == State::kHold) {
@@ -75,7 +84,7 @@ void GoldenTapeDecoder::edge(const InterpInputs& in, bool buffer_empty) {
   }
   tape_end_q_ = in.tape_end;
   ready_ = state_ != State::kError &&
-           !((state_ == State::kHold || state_ == State::kPrepare) && in_valid_);
+           !((state_ == State::kHold || state_ == State::kPrepare || digit_pass_ > 0) && in_valid_);
 }
 
 void GoldenTapeDecoder::process_frame(uint8_t frame) {
@@ -126,7 +135,13 @@ void GoldenTapeDecoder::digit(unsigned d, uint32_t offset) {
   if (in_fraction && frac_count_ == fraction_digits(word_))
     return fail(TapeError::kMalformedNumber, offset);
   const uint64_t value = num_ * 10 + d;
-  if (value > limit(word_)) return fail(TapeError::kValueTooWide, offset);
+  const bool over = value > limit(word_);
+  if (bit_serial_) {  // the limit's verdict comes at the pass's last edge
+    digit_pass_ = num_width_;
+    digit_over_ = over;
+  } else if (over) {
+    return fail(TapeError::kValueTooWide, offset);
+  }
   num_ = value;
   if (in_fraction)
     ++frac_count_;

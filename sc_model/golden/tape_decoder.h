@@ -48,7 +48,7 @@ class GoldenTapeDecoder {
   bool quiet(const InterpInputs& in, bool buffer_empty) const {
     if (in.tape_end != tape_end_q_) return false;
     if (state_ == State::kHold) return !buffer_empty && !(in.frame_valid && ready_);
-    return !in.frame_valid && !in_valid_ && state_ != State::kPrepare &&
+    return !in.frame_valid && !in_valid_ && state_ != State::kPrepare && digit_pass_ == 0 &&
            !(tape_end_q_ && state_ <= State::kComment);
   }
   // One rising edge. buffer_empty: the block buffer can take a held block at this edge
@@ -88,7 +88,10 @@ class GoldenTapeDecoder {
   void clear_block();
   void fail(TapeError code, uint32_t offset);
 
-  // Parameters.
+  // Parameters. bit_serial_: a digit's x10 + d is a pass of num_width_ clocks (the RTL's
+  // BitSerial; num_width_ is its NumWidth, the widest word register, at least 7 bits).
+  bool bit_serial_;
+  unsigned num_width_;
   unsigned frac_digits_, feed_frac_digits_;
   uint64_t inc_limit_, feed_limit_, seq_limit_;
   uint32_t offset_mask_;
@@ -108,6 +111,10 @@ class GoldenTapeDecoder {
   bool neg_ = false;
   unsigned frac_count_ = 0;
   uint32_t word_offset_ = 0;
+  // BitSerial: the clocks left of a digit's pass (no frame is processed meanwhile), and
+  // whether the number went over its word's limit (an error at the pass's last edge).
+  unsigned digit_pass_ = 0;
+  bool digit_over_ = false;
   // Block assembly (n, motion and feed are modal: never cleared at a block start).
   DecodedBlock block_;
   bool n_seen_ = false, any_word_ = false, motion_block_ = false, end_block_ = false;

@@ -39,7 +39,7 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     while (k < 62 && (m >> k) != 0) ++k;
     const uint64_t iterations = arc ? 2ull << k : 1ull << k;
     const uint64_t prepare =
-        arc ? ArcPrepare::clocks(cfg.inc_width, cfg.serial_dry_run, iterations, k) : 0;
+        arc ? ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, iterations, k) : 0;
     const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
     total += std::max(iterations + 1, programmed) + prepare + 3;
   }

@@ -29,7 +29,7 @@ struct CheckArgs {
   std::string contour;
   double tol_mm = 0.01;
   std::string engine = "golden";
-  bool serial_dry_run = false;
+  bool bit_serial = false;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
   std::string svg, report;
@@ -64,11 +64,11 @@ int run(const CheckArgs& a) {
   setup.clock_hz = a.clock_hz;
   setup.reader_cps = a.reader_cps;
   setup.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
-  if (a.serial_dry_run && setup.engine == EngineKind::kRtl)
+  if (a.bit_serial && setup.engine == EngineKind::kRtl)
     throw std::invalid_argument(
-        "--serial-dry-run needs --engine golden: this build's verilated RTL has the parallel dry "
-        "run (the board's RTL has the serial one: `ncinterp board-sim`)");
-  setup.serial_dry_run = a.serial_dry_run;
+        "--bit-serial needs --engine golden: this build's verilated RTL is the parallel "
+        "one (the board's RTL is bit-serial: `ncinterp board-sim`)");
+  setup.bit_serial = a.bit_serial;
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";
@@ -126,9 +126,10 @@ CommandRegistration registration("check", [](CLI::App& app) {
   cmd->add_option("--engine", args->engine, "golden model or verilated RTL")
       ->check(CLI::IsMember({"golden", "rtl"}))
       ->capture_default_str();
-  cmd->add_flag("--serial-dry-run", args->serial_dry_run,
-                "play as the board's RTL does: an arc's dry run bit-serial, 2W clocks per iteration "
-                "(interp_top's SerialDryRun; golden engine)");
+  cmd->add_flag("--bit-serial", args->bit_serial,
+                "play as the board's RTL does: the per-block arithmetic bit-serial (an arc's dry run "
+                "2W clocks per iteration, a digit's x10 + d a pass of its number width; interp_top's "
+                "BitSerial; golden engine)");
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();

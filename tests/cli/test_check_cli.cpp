@@ -131,17 +131,17 @@ TEST_F(CheckCli, BadSvgPathFailsBeforeTheRunAndLeavesNoReport) {
 // The bundled arc tape as the board plays it (the bit-serial dry run): the same path, a
 // longer run (each arc is prepared in 2WN + k clocks instead of N, and the first one has no
 // block ahead to hide it); the verilated RTL of this build cannot play it so.
-TEST_F(CheckCli, SerialDryRunPlaysTheSamePathInMoreClocks) {
+TEST_F(CheckCli, BitSerialPlaysTheSamePathInMoreClocks) {
   const std::string tape = std::string(NCINTERP_EXAMPLES_DIR) + "/circle_r50.nc";
   ASSERT_EQ(run("check " + tape + " --report " + path("parallel.json")), 0) << stderr_;
-  ASSERT_EQ(run("check " + tape + " --serial-dry-run --report " + path("serial.json")), 0) << stderr_;
+  ASSERT_EQ(run("check " + tape + " --bit-serial --report " + path("serial.json")), 0) << stderr_;
   const auto parallel = nlohmann::json::parse(slurp(path("parallel.json")));
   const auto serial = nlohmann::json::parse(slurp(path("serial.json")));
   EXPECT_EQ(serial["final_position"], parallel["final_position"]);
   EXPECT_EQ(serial["pulse_clocks"], parallel["pulse_clocks"]);
   EXPECT_GT(serial["cycles"].get<uint64_t>(), parallel["cycles"].get<uint64_t>());
-  EXPECT_EQ(run("check " + tape + " --serial-dry-run --engine rtl"), 1);
-  EXPECT_NE(stderr_.find("--serial-dry-run needs --engine golden"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("check " + tape + " --bit-serial --engine rtl"), 1);
+  EXPECT_NE(stderr_.find("--bit-serial needs --engine golden"), std::string::npos) << stderr_;
 }
 
 TEST_F(CheckCli, UsageErrorsExitOne) {

@@ -17,7 +17,7 @@ std::string joined(const std::vector<std::string>& items) {
 }
 
 std::string build_dir(const RtlVariantSetup& s, unsigned w) {
-  return s.build_root + "/w" + std::to_string(w) + (s.serial_dry_run ? "-serial" : "");
+  return s.build_root + "/w" + std::to_string(w) + (s.bit_serial ? "-serial" : "");
 }
 
 std::string step_failure(const std::string& what, const ProcessOutcome& p, const std::string& log) {
@@ -41,7 +41,7 @@ std::string build_rtl_variant(const RtlVariantSetup& s, unsigned w) {
   for (const std::string& d : {"INC_WIDTH=" + std::to_string(w), "NCINTERP_SOURCE_DIR=" + s.source_dir,
                                "RTL_SOURCES=" + joined(s.rtl_sources), "VERILATOR_ARGS=" + joined(s.verilator_args),
                                "GOLDEN_LIBRARY=" + s.golden_library,
-                               std::string("SERIAL_DRY_RUN=") + (s.serial_dry_run ? "ON" : "OFF")})
+                               std::string("BIT_SERIAL=") + (s.bit_serial ? "ON" : "OFF")})
     configure.push_back("-D" + d);
   const std::string configure_log = dir + "/configure.log";
   const ProcessOutcome c = run_process(configure, configure_log);

@@ -23,7 +23,7 @@ struct RtlVariantSetup {
   std::string generator;                    // CMake generator ("" = CMake's default)
   std::string cxx_compiler;                 // "" = CMake's default
   std::string build_root;                   // variant build trees: <build_root>/w<W>[-serial]
-  bool serial_dry_run = false;              // SerialDryRun = 1 (interp_top's parameter)
+  bool bit_serial = false;              // BitSerial = 1 (interp_top's parameter)
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
 };

@@ -211,12 +211,12 @@ TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW6) {
   arc_prepare_lockstep_w6<Varc_prepare_w6>(false);
 }
 
-// The bit-serial dry run (SerialDryRun): radii up to 2^12 keep the runs short (2WN clocks).
-TEST(CircleRtlLockstep, SerialDryRunArcPrepareEqualsGoldenEveryClockAtW16) {
+// The bit-serial dry run (BitSerial): radii up to 2^12 keep the runs short (2WN clocks).
+TEST(CircleRtlLockstep, BitSerialArcPrepareEqualsGoldenEveryClockAtW16) {
   arc_prepare_lockstep_w16<Varc_prepare_serial>(true, 4095);
 }
 
-TEST(CircleRtlLockstep, SerialDryRunArcPrepareEqualsGoldenEveryClockAtW6) {
+TEST(CircleRtlLockstep, BitSerialArcPrepareEqualsGoldenEveryClockAtW6) {
   arc_prepare_lockstep_w6<Varc_prepare_serial_w6>(true);
 }
 

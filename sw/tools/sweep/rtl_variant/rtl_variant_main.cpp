@@ -1,5 +1,5 @@
 // ncinterp_rtl_variant: the lock-step cosim (sc_model/cosim/lockstep.h) of one width
-// variant of the RTL (verilated with -GIncWidth=W, and -GSerialDryRun=1'b1 if so
+// variant of the RTL (verilated with -GIncWidth=W, and -GBitSerial=1'b1 if so
 // configured) against the golden model with the same parameters.
 // Usage: ncinterp_rtl_variant [--clock-hz F] [--reader-cps C] TAPE...   (.tape frames)
 // Prints one line per tape, "done CYCLES TAPE" when both engines agreed on every clock up
@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
 
   cosim::Options options;
   options.config.inc_width = NCINTERP_RTL_INC_WIDTH;
-#ifdef NCINTERP_RTL_SERIAL_DRY_RUN
-  options.config.serial_dry_run = true;
+#ifdef NCINTERP_RTL_BIT_SERIAL
+  options.config.bit_serial = true;
 #endif
   options.config.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, options.config.feed_frac_digits);
   options.cycles_per_frame = FrameSource::cycles_per_frame_for(clock_hz, reader_cps);

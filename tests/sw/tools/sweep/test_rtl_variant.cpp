@@ -48,17 +48,17 @@ TEST_F(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
   EXPECT_EQ(r.summary, "match on 1 tapes, " + std::to_string(in.cycles) + " clocks");
 }
 
-// The serial dry run (interp_top's SerialDryRun) on the 50 mm circle programmed as arcs at
+// The serial dry run (interp_top's BitSerial) on the 50 mm circle programmed as arcs at
 // W = 16, in lock step with the golden model configured alike. Its arcs (N about 10^5)
 // take 2WN clocks to prepare: the run is longer than the parallel dry run's, which shows
 // that the variant is the serial one.
-TEST_F(RtlVariantHeavy, SerialDryRunMatchesTheGoldenModelOnEveryClock) {
+TEST_F(RtlVariantHeavy, BitSerialMatchesTheGoldenModelOnEveryClock) {
   const std::string tape = path("circle_arcs_w16.tape");
   const InputResult in = circle_tape(16, true, tape);
   ASSERT_TRUE(in.measured()) << in.failure;
 
   RtlVariantSetup s = setup();
-  s.serial_dry_run = true;
+  s.bit_serial = true;
   const RtlResult r = run_rtl_variant(s, 16, {tape});
   EXPECT_TRUE(r.ran);
   EXPECT_TRUE(r.all_match) << r.summary;

@@ -1,0 +1,231 @@
+// Module-level lock step of the verilated tape decoder (rtl/tape_decoder.sv, its frame
+// input, word parser and arc preparation) against GoldenTapeDecoder, every clock: the
+// reader's ready, the held block and every field of it, the end, and the error with its code,
+// block and offset. Random word-heavy tapes: now and then a number over its word's limit,
+// a stray character, a wrong fraction or a parity error, small arcs; the reader and the block buffer at random speeds (the
+// handshakes stall both ways). The decoder both parallel and bit-serial (BitSerial: a
+// digit's x10 + d is a pass of NumWidth clocks, and its limit's verdict comes at the pass's
+// end), at the default widths and at narrow ones.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Vtape_decoder.h"
+#include "Vtape_decoder_narrow.h"
+#include "Vtape_decoder_serial.h"
+#include "Vtape_decoder_serial_narrow.h"
+#include "tape_decoder.h"
+#include "verilated.h"
+
+namespace ncinterp {
+namespace {
+
+// The widths of a verilated flavour (its -G parameters in CMakeLists.txt).
+InterpConfig config(bool narrow, bool bit_serial) {
+  InterpConfig c;
+  if (narrow) {
+    c.inc_width = 6;
+    c.feed_width = 8;
+    c.seq_width = 7;
+    c.offset_width = 12;
+  }
+  c.bit_serial = bit_serial;
+  return c;
+}
+
+// A number of a word whose register has `bits` bits, with `frac` fraction digits on tape:
+// one in 20 drawn below 2^(bits + 1) (so about half of those are over the word's limit),
+// the others within it.
+std::string number(std::mt19937_64& rng, unsigned bits, unsigned frac) {
+  const uint64_t v = rng() % (uint64_t{rng() % 20 == 0 ? 2u : 1u} << bits);
+  std::string s = std::to_string(v);
+  if (frac == 0) return s;
+  if (s.size() <= frac) s = std::string(frac + 1 - s.size(), '0') + s;
+  return s.substr(0, s.size() - frac) + "." + s.substr(s.size() - frac);
+}
+
+// A tape of random blocks in the strict syntax, with faults now and then (each block has
+// a small chance to break the syntax somewhere), as frames with even parity.
+std::vector<uint8_t> random_tape(std::mt19937_64& rng, const InterpConfig& c) {
+  const auto chance = [&](unsigned percent) { return rng() % 100 < percent; };
+  std::string t = "%\n";
+  bool arc = false;  // the modal motion: arcs get small words (short preparations)
+  const int blocks = 2 + static_cast<int>(rng() % 8);
+  for (int b = 0; b < blocks; ++b) {
+    if (chance(60)) t += "N" + number(rng, c.seq_width, 0) + " ";
+    if (chance(50)) {
+      static const char* const codes[] = {"01", "1", "02", "03", "17", "01", "91", "1", "93", "2",
+                                          "99", "100", "123"};
+      const std::string g = codes[rng() % (chance(90) ? 10 : 13)];
+      t += "G" + g + " ";
+      if (g == "01" || g == "1") arc = false;
+      if (g == "02" || g == "03" || g == "2") arc = true;
+    }
+    const unsigned bits = arc ? std::min(c.inc_width, 9u) : c.inc_width;
+    for (const char* axis : {"X", "Y", "I", "J"}) {
+      if (!chance(arc || axis[0] == 'X' || axis[0] == 'Y' ? 70 : 10)) continue;
+      t += axis;
+      if (chance(40)) t += chance(50) ? "-" : "+";
+      t += number(rng, bits, c.frac_digits);
+    }
+    if (chance(60)) t += "F" + number(rng, c.feed_width, c.feed_frac_digits);
+    if (chance(3)) {  // a fault: a stray character somewhere in the block
+      static const std::string stray = "XYZ+-.0123456789 \r%(A";
+      const size_t at = 2 + rng() % (t.size() - 1);
+      t.insert(at, 1, stray[rng() % stray.size()]);
+    }
+    if (chance(5)) t += "(comment " + std::to_string(b) + ")";
+    t += chance(1) ? "" : "\n";
+  }
+  if (chance(90)) t += "M02\n%\n";
+  std::vector<uint8_t> frames;
+  for (char ch : t) {
+    uint8_t f = static_cast<uint8_t>(ch) & 0x7f;
+    if (__builtin_parity(f)) f |= 0x80;
+    if (rng() % 1000 == 0) f ^= 0x40;  // a parity error
+    frames.push_back(f);
+  }
+  return frames;
+}
+
+template <typename Model>
+void clock_edge(Model& m) {
+  m.clk_i = 1;
+  m.eval();
+  m.clk_i = 0;
+  m.eval();
+}
+
+// The RTL's outputs against the golden decoder's state after the same edge.
+template <typename Model>
+::testing::AssertionResult same(const Model& m, const GoldenTapeDecoder& g) {
+  using State = GoldenTapeDecoder::State;
+  const DecodedBlock& b = g.block();
+  std::ostringstream diff;
+  const auto check = [&](const char* name, uint64_t rtl, uint64_t golden) {
+    if (rtl != golden && diff.tellp() == 0)
+      diff << name << ": RTL " << rtl << ", golden " << golden;
+  };
+  check("frame_ready_o", m.frame_ready_o, g.ready());
+  check("blk_valid_o", m.blk_valid_o, g.state() == State::kHold);
+  check("end_o", m.end_o, g.state() == State::kEnd);
+  check("err_o", m.err_o, g.state() == State::kError);
+  if (m.blk_valid_o) {
+    check("blk_n_o", m.blk_n_o, b.n);
+    check("blk_motion_o", m.blk_motion_o, b.motion);
+    check("blk_dx_o", m.blk_dx_o, b.dx);
+    check("blk_dx_neg_o", m.blk_dx_neg_o, b.dx_neg);
+    check("blk_dy_o", m.blk_dy_o, b.dy);
+    check("blk_dy_neg_o", m.blk_dy_neg_o, b.dy_neg);
+    check("blk_i_o", m.blk_i_o, b.i);
+    check("blk_j_o", m.blk_j_o, b.j);
+    check("blk_step_o", m.blk_step_o, b.step);
+  }
+  if (m.err_o) {
+    check("err_code_o", m.err_code_o, static_cast<uint64_t>(g.error_code()));
+    check("err_block_o", m.err_block_o, g.error_block());
+    check("err_offset_o", m.err_offset_o, g.error_offset());
+  }
+  if (diff.tellp() == 0) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << diff.str() << " [golden state " << int(g.state()) << " code " << int(g.error_code()) << " off " << g.error_offset() << "; rtl err " << int(m.err_o) << " code " << int(m.err_code_o) << " hold " << int(m.blk_valid_o) << "]";
+}
+
+// How the tapes ended: a program decoded to its end, an error (by code).
+struct Outcomes {
+  int ended = 0, held_blocks = 0;
+  int errors[16] = {0};
+};
+
+// Plays `tapes` random tapes through the verilated decoder and its twin in lock step.
+template <typename Model>
+::testing::AssertionResult lockstep(const InterpConfig& c, int tapes, uint64_t seed, Outcomes& out) {
+  std::mt19937_64 rng(seed);
+  auto ctx = std::make_unique<VerilatedContext>();
+  Model m(ctx.get());
+  GoldenTapeDecoder g(c);
+  for (int t = 0; t < tapes; ++t) {
+    const std::vector<uint8_t> frames = random_tape(rng, c);
+    // The reader offers a frame in this share of clocks; the buffer is free in that share.
+    const unsigned offer_percent = std::vector<unsigned>{100, 50, 3}[rng() % 3];
+    const unsigned free_percent = std::vector<unsigned>{100, 30}[rng() % 2];
+    m.rst_ni = 0;
+    m.frame_valid_i = 0;
+    m.tape_end_i = 0;
+    m.blk_ready_i = 0;
+    m.eval();  // the model's first evaluation sees no edge
+    clock_edge(m);
+    m.rst_ni = 1;
+    m.eval();
+    g.reset();
+    size_t next = 0;
+    for (uint64_t clock = 1; clock < 3'000'000; ++clock) {
+      const bool offer = next < frames.size() && rng() % 100 < offer_percent;
+      InterpInputs in;
+      in.frame_valid = offer;
+      in.frame = offer ? frames[next] : 0;
+      in.tape_end = next == frames.size();
+      const bool free = rng() % 100 < free_percent;
+      if (free && g.state() == GoldenTapeDecoder::State::kHold) ++out.held_blocks;
+      if (offer && m.frame_ready_o) ++next;
+      m.frame_valid_i = in.frame_valid;
+      m.frame_i = in.frame;
+      m.tape_end_i = in.tape_end;
+      m.blk_ready_i = free;
+      g.edge(in, free);
+      clock_edge(m);
+      const ::testing::AssertionResult r = same(m, g);
+      if (!r)
+        return ::testing::AssertionFailure() << "tape " << t << " (seed " << seed << "), clock "
+                                             << clock << ": " << r.message();
+      if (m.err_o) {
+        ++out.errors[m.err_code_o & 15];
+        break;
+      }
+      if (m.end_o && next == frames.size()) {
+        ++out.ended;
+        break;
+      }
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// Enough of every kind of run that the comparison covered them: programs to their end,
+// blocks handed over, and words over their limit (the bit-serial limit check's verdict).
+void expect_coverage(const Outcomes& o) {
+  EXPECT_GT(o.ended, 100);
+  EXPECT_GT(o.held_blocks, 2000);
+  EXPECT_GT(o.errors[static_cast<int>(TapeError::kValueTooWide)], 100);
+  EXPECT_GT(o.errors[static_cast<int>(TapeError::kMalformedNumber)], 20);
+}
+
+TEST(DecoderLockstep, ParallelEqualsGoldenEveryClock) {
+  Outcomes o;
+  EXPECT_TRUE(lockstep<Vtape_decoder>(config(false, false), 2000, 1, o));
+  expect_coverage(o);
+}
+
+TEST(DecoderLockstep, BitSerialEqualsGoldenEveryClock) {
+  Outcomes o;
+  EXPECT_TRUE(lockstep<Vtape_decoder_serial>(config(false, true), 2000, 2, o));
+  expect_coverage(o);
+}
+
+TEST(DecoderLockstep, ParallelEqualsGoldenEveryClockAtNarrowWidths) {
+  Outcomes o;
+  EXPECT_TRUE(lockstep<Vtape_decoder_narrow>(config(true, false), 2000, 3, o));
+  expect_coverage(o);
+}
+
+TEST(DecoderLockstep, BitSerialEqualsGoldenEveryClockAtNarrowWidths) {
+  Outcomes o;
+  EXPECT_TRUE(lockstep<Vtape_decoder_serial_narrow>(config(true, true), 2000, 4, o));
+  expect_coverage(o);
+}
+
+}  // namespace
+}  // namespace ncinterp
