@@ -5,11 +5,15 @@
 // same integers and the same half-step order (X Y | Y X | X Y ...), and marks each
 // iteration (iterate_o). The golden twin is ArcDryRun (sc_model/golden/arc_dry_run.h).
 // Idea: the player's DDA must make an iteration per clock; the dry run only has to be over
-// before the block is needed, so it runs serially, the 1960s way: six circulating shift
+// before the block is needed, so it runs serially, the 1960s way: six circulating
 // registers (acc, mag, cnt of X and Y) and three one-bit full adders instead of six W-bit
-// adders. Every value is < 2^k (k = the arc's bit length, at most W), LSB first.
-// Schedule: a pass is W clocks, one half-step; bit i of every register is at its bit 0 at
-// clock i of a pass, and every register goes once round. Pass p integrates axis C (X, Y,
+// adders. Every value is < 2^k (k = the arc's bit length, at most W), LSB first. The six
+// registers are one W x 6-bit memory, bit i of each at address i (`bits`): a block RAM on
+// the iCE40 (one SB_RAM40_4K of the HX1K's 16), so their 6W bits need no logic cells.
+// Schedule: a pass is W clocks, one half-step; clock i of a pass reads bit i of every
+// register (the memory's registered read, addressed at clock i - 1) and writes it back, new
+// or unchanged, at address i. The first pass after the start reads the arc's words instead
+// (the memory still holds the previous arc): x_i[i], y_i[i], cnt_*_i[i], and acc = 2^(k-1). Pass p integrates axis C (X, Y,
 // Y, X, X, Y, ... by p mod 4). Pass p also applies the step that pass p - 1 decided, on
 // that pass's axis U: mag_U +- step and cnt_U - step, on two serial adders whose result
 // bits feed C's addend in the same clock. So the second half-step of an iteration sees
@@ -46,13 +50,19 @@ module arc_dry_run #(
   localparam int BitWidth = $clog2(IncWidth);
   localparam logic [BitWidth-1:0] LastBit = BitWidth'(IncWidth - 1);
 
-  // The registers by axis name, circulating (shift right, the current bit at [0]).
+  // The registers by axis name, bit i at address i; cur_*: bit i of each at clock i (the
+  // memory's read, or the arc's words in the first pass: first_pass_q).
   // half_q: the pass's place in X Y Y X (C is Y at 1 and 2; U, the previous pass's axis,
   // is Y at 2 and 3). bit_q: i. pend_q: pass p - 1's step, applied in this pass; step_q:
   // this pass's step (from clock k - 1). carry_*_q: the serial adders' carries. zero_*_q:
   // that axis has no pulses left (for U, before this pass's update); zrun_q: U's updated
   // count is 0 in the bits so far. busy_q: between the start edge and done.
-  logic [IncWidth-1:0] acc_x_q, acc_y_q, mag_x_q, mag_y_q, cnt_x_q, cnt_y_q;
+  // A word of the memory: bit i of each register, at these places.
+  localparam int AccX = 5, AccY = 4, MagX = 3, MagY = 2, CntX = 1, CntY = 0;
+  (* no_rw_check *) logic [5:0] bits [IncWidth];  // never read and written at one address
+  logic [5:0]          read_q, cur, next;
+  logic [BitWidth-1:0] next_bit;
+  logic                first_pass_q;
   logic [1:0]          half_q;
   logic [BitWidth-1:0] bit_q;
   logic                pend_q, step_q, carry_acc_q, carry_mag_q, carry_cnt_q;
@@ -62,7 +72,6 @@ module arc_dry_run #(
   logic                c_is_y, u_is_y, u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero;
   logic                mag_add, mag_sum, mag_cout, cnt_sum, cnt_cout, zrun_d, u_zero;
   logic                addend, acc_sum, acc_cout, acc_bit, step, check, finished;
-  logic [IncWidth-1:0] half_modulus;
 
   assign active    = start_i || (run_i && busy_q);
   assign first_bit = bit_q == '0;
@@ -71,7 +80,11 @@ module arc_dry_run #(
   // Clock k - 1 of the pass, and the bits below k (the integrator's).
   assign top_bit   = KWidth'(bit_q) + 1'b1 == k_i;
   assign below_k   = KWidth'(bit_q) < k_i;
-  assign half_modulus = IncWidth'(1) << (k_i - 1'b1);
+  assign next_bit  = bit_q == LastBit ? '0 : bit_q + 1'b1;
+  // Bit i of each register; acc starts at 2^(k-1) (rounding to nearest, as the player's DDA
+  // loads), whose bit i is 1 at i = k - 1 only.
+  assign cur = first_pass_q ? {top_bit, top_bit, x_i[bit_q], y_i[bit_q], cnt_x_i[bit_q], cnt_y_i[bit_q]}
+                            : read_q;  // AccX .. CntY
 
   always_comb begin
     // Used only while running: don't-care ('x) otherwise (no gates, no evaluation).
@@ -81,8 +94,8 @@ module arc_dry_run #(
     if (active && !start_i) begin
       // U's update: mag + 1, or + all ones (- 1), when pend; cnt + all ones (- 1).
       u_grow  = u_is_y ? grow_y_i : grow_x_i;
-      u_mag   = u_is_y ? mag_y_q[0] : mag_x_q[0];
-      u_cnt   = u_is_y ? cnt_y_q[0] : cnt_x_q[0];
+      u_mag   = u_is_y ? cur[MagY] : cur[MagX];
+      u_cnt   = u_is_y ? cur[CntY] : cur[CntX];
       mag_add = pend_q && (first_bit || !u_grow);
       {mag_cout, mag_sum} = {1'b0, u_mag} + {1'b0, mag_add} + {1'b0, !first_bit && carry_mag_q};
       {cnt_cout, cnt_sum} = {1'b0, u_cnt} + {1'b0, pend_q} + {1'b0, !first_bit && carry_cnt_q};
@@ -90,13 +103,13 @@ module arc_dry_run #(
       u_zero  = zrun_d;  // U's updated count is 0 (final at clock k - 1: cnt < 2^k)
       // C's half-step: acc_C + |O| (O = the other axis: U itself within an iteration, so
       // its moved magnitude), with bit k - 1 forced on once O has no pulses left.
-      c_acc   = c_is_y ? acc_y_q[0] : acc_x_q[0];
+      c_acc   = c_is_y ? cur[AccY] : cur[AccX];
       if (c_is_y != u_is_y) begin
         o_mag  = mag_sum;
         o_zero = u_zero;
         c_zero = c_is_y ? zero_y_q : zero_x_q;
       end else begin
-        o_mag  = c_is_y ? mag_x_q[0] : mag_y_q[0];
+        o_mag  = c_is_y ? cur[MagX] : cur[MagY];
         o_zero = c_is_y ? zero_x_q : zero_y_q;
         c_zero = u_zero;
       end
@@ -113,21 +126,34 @@ module arc_dry_run #(
   assign done_o    = done_q;
   assign iterate_o = active && !start_i && check && !finished;
 
+  // What clock i writes back at address i: the adders' bits on the registers this pass
+  // writes (acc of C; mag and cnt of U), the others unchanged.
+  always_comb begin
+    next = cur;
+    if (c_is_y) next[AccY] = acc_bit;
+    else        next[AccX] = acc_bit;
+    if (u_is_y) {next[MagY], next[CntY]} = {mag_sum, cnt_sum};
+    else        {next[MagX], next[CntX]} = {mag_sum, cnt_sum};
+  end
+
+  // The memory: one write and one read per running clock, no reset (the first pass does
+  // not read it).
+  always_ff @(posedge clk_i) begin
+    if (active && !start_i) begin
+      bits[bit_q] <= next;
+      read_q      <= bits[next_bit];
+    end
+  end
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      {acc_x_q, acc_y_q, mag_x_q, mag_y_q, cnt_x_q, cnt_y_q} <= '0;
+      first_pass_q <= 1'b0;
       half_q <= '0;
       bit_q  <= '0;
       {pend_q, step_q, carry_acc_q, carry_mag_q, carry_cnt_q} <= '0;
       {zero_x_q, zero_y_q, zrun_q, busy_q, done_q} <= '0;
     end else if (start_i) begin
-      // acc = 2^(k-1): rounding to nearest, as the player's DDA loads.
-      acc_x_q  <= half_modulus;
-      acc_y_q  <= half_modulus;
-      mag_x_q  <= x_i;
-      mag_y_q  <= y_i;
-      cnt_x_q  <= cnt_x_i;
-      cnt_y_q  <= cnt_y_i;
+      first_pass_q <= 1'b1;
       zero_x_q <= cnt_x_i == '0;
       zero_y_q <= cnt_y_i == '0;
       half_q   <= '0;
@@ -136,13 +162,6 @@ module arc_dry_run #(
       busy_q   <= 1'b1;
       done_q   <= 1'b0;
     end else if (active) begin
-      // Every clock: each register one place round; the written ones take the adders' bits.
-      acc_x_q <= {!c_is_y ? acc_bit : acc_x_q[0], acc_x_q[IncWidth-1:1]};
-      acc_y_q <= {c_is_y ? acc_bit : acc_y_q[0], acc_y_q[IncWidth-1:1]};
-      mag_x_q <= {!u_is_y ? mag_sum : mag_x_q[0], mag_x_q[IncWidth-1:1]};
-      mag_y_q <= {u_is_y ? mag_sum : mag_y_q[0], mag_y_q[IncWidth-1:1]};
-      cnt_x_q <= {!u_is_y ? cnt_sum : cnt_x_q[0], cnt_x_q[IncWidth-1:1]};
-      cnt_y_q <= {u_is_y ? cnt_sum : cnt_y_q[0], cnt_y_q[IncWidth-1:1]};
       carry_acc_q <= acc_cout;
       carry_mag_q <= mag_cout;
       carry_cnt_q <= cnt_cout;
@@ -153,14 +172,13 @@ module arc_dry_run #(
         done_q <= 1'b1;
       end
       if (bit_q == LastBit) begin
-        bit_q  <= '0;
+        first_pass_q <= 1'b0;
         half_q <= half_q + 1'b1;
         pend_q <= top_bit ? step : step_q;
         if (u_is_y) zero_y_q <= zrun_d;
         else        zero_x_q <= zrun_d;
-      end else begin
-        bit_q <= bit_q + 1'b1;
       end
+      bit_q <= next_bit;
     end
   end
 

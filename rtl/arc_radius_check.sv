@@ -21,6 +21,11 @@
 //                    LSB first (4A's bit i is a's bit i - 2), the last pass's verdict counts
 //   Done             ok_o = !far && acc <= 4A (|E| >= 2^(W+2) fails: 4A < 2^(2W+3))
 // The operands must stay constant from the start edge to done (the decoder's held block).
+// The two circulating registers, acc and 4A, are one L x 2-bit memory, bit i of each at
+// address i (`bits`; a block RAM on the iCE40, so their 2L bits need no logic cells):
+// clock i of a pass reads bit i (the memory's registered read, addressed at clock i - 1)
+// and writes it back, new or unchanged. The first pass reads acc as 0 (the memory still
+// holds the previous arc's). 4A is written in Copy, bit i from acc's bit i - 2 (acc2_q).
 // Until 25 November 2026 (third session) the check ran on one 2W + 4-bit adder in 5W + 5
 // clocks (docs/bit-widths.md section 6 has both areas).
 module arc_radius_check #(
@@ -48,15 +53,19 @@ module arc_radius_check #(
   typedef enum logic [2:0] {SumA, Copy, SumB, Abs, Sq, Done} phase_e;
 
   // phase_q, pass_q (b), bit_q (i): where the schedule is; second_q: the y term of a sum of
-  // squares. acc_q: the accumulator, circulating (bit i of the word is at acc_q[0] at clock
-  // i of a pass); carry_q: the serial adder's carry. a_q: A, circulating with acc_q in the
-  // passes that read it. e_q: |E|. far_q: |E| >= 2^(W+2). neg_q: E < 0 (in Abs). le_q: the
-  // low bits of acc so far are <= those of 4A (in Sq).
+  // squares. bits: the accumulator and 4A, bit i at address i ([Acc], [FourA]); read_q:
+  // the word of this clock's bit (cur: as used, acc 0 in the first pass, first_pass_q);
+  // next: what this clock writes back. acc2_q: acc's bits of the two clocks before (Copy).
+  // carry_q: the serial adder's carry. e_q: |E|. far_q: |E| >= 2^(W+2). neg_q: E < 0
+  // (E's top bit, the last bit of SumB; used in Abs). le_q: the low bits of acc so far
+  // are <= those of 4A (in Sq).
+  localparam int Acc = 1, FourA = 0;
   phase_e                 phase_q;
   logic [PassWidth-1:0]   pass_q;
-  logic [BitWidth-1:0]    bit_q;
-  logic                   second_q;
-  logic [SqWidth-1:0]     acc_q, a_q;
+  logic [BitWidth-1:0]    bit_q, next_bit;
+  logic                   second_q, first_pass_q;
+  (* no_rw_check *) logic [1:0] bits [SqWidth];  // never read and written at one address
+  logic [1:0]             read_q, cur, next, acc2_q;
   logic                   carry_q;
   logic [EWidth-1:0]      e_q;
   logic                   far_q, neg_q, le_q;
@@ -64,7 +73,7 @@ module arc_radius_check #(
   // The serial adder: sum = (acc bit ^ invert) + addend + carry in (carry_in0 at a pass's
   // first clock).
   logic                  active, first_bit, last_bit, invert, carry_in0, addend, cin, sum, cout;
-  logic                  neg, four_a_bit, le_d;
+  logic                  four_a_bit, le_d;
   logic [IncWidth-1:0]   v;        // the squared operand of a sum pass
   logic [EWidth-1:0]     u;        // ... widened, or e in Sq
   logic [BitWidth-1:0]   offset;   // i - b: the bit of u that pass b adds at clock i
@@ -75,27 +84,32 @@ module arc_radius_check #(
   assign active    = start_i || phase_q != Done;
   assign first_bit = bit_q == '0;
   assign last_bit  = bit_q == LastBit;
+  assign next_bit  = last_bit ? '0 : bit_q + 1'b1;
+  assign cur       = first_pass_q ? {1'b0, read_q[FourA]} : read_q;
 
   always_comb begin
     // Used only while the check runs: don't-care ('x) otherwise.
-    {v, u, offset, in_range, invert, carry_in0, addend, neg, cin, sum, cout, four_a_bit,
-     le_d} = 'x;
+    {v, u, offset, in_range, invert, carry_in0, addend, cin, sum, cout, four_a_bit,
+     le_d, next} = 'x;
     if (active && !start_i) begin
       v = phase_q == SumA ? (second_q ? y0_i : x0_i) : (second_q ? y1_i : x1_i);
       u = phase_q == Sq ? e_q : {2'b00, v};
       offset   = bit_q - BitWidth'(pass_q);
       in_range = bit_q >= BitWidth'(pass_q) && offset < BitWidth'(EWidth);
-      neg       = first_bit ? acc_q[SqWidth-1] : neg_q;  // E's sign, read at the pass start
-      invert    = phase_q == Copy || (phase_q == Abs && neg);
-      carry_in0 = phase_q == Abs && neg;
+      invert    = phase_q == Copy || (phase_q == Abs && neg_q);
+      carry_in0 = phase_q == Abs && neg_q;
       addend    = (phase_q == SumA || phase_q == SumB || phase_q == Sq) && u[pass_q] &&
                   in_range && u[offset[PassWidth-1:0]];
       cin       = first_bit ? carry_in0 : carry_q;
-      {cout, sum} = {1'b0, acc_q[0] ^ invert} + {1'b0, addend} + {1'b0, cin};
-      // acc <= 4A, LSB first: the bit of 4A at clock i is A's bit i - 2, two places behind
-      // acc's in a_q (0 at i < 2: A < 2^(2W+1) leaves a's top bits 0).
-      four_a_bit = a_q[SqWidth-2];
+      {cout, sum} = {1'b0, cur[Acc] ^ invert} + {1'b0, addend} + {1'b0, cin};
+      // acc <= 4A, LSB first (in Sq).
+      four_a_bit = cur[FourA];
       le_d = (!sum && four_a_bit) || (sum == four_a_bit && (first_bit || le_q));
+      // Written back: acc's new bit (0 in Abs, which clears it), and 4A unchanged, or in
+      // Copy A's bit i - 2, two clocks back (at i < 2 that is A's bit L - 2 or L - 1 from
+      // the end of SumA, 0: A < 2^(2W+1)).
+      next[Acc]   = phase_q == Abs ? 1'b0 : sum;
+      next[FourA] = phase_q == Copy ? acc2_q[1] : cur[FourA];
     end
   end
 
@@ -105,8 +119,8 @@ module arc_radius_check #(
       pass_q   <= '0;
       bit_q    <= '0;
       second_q <= 1'b0;
-      acc_q    <= '0;
-      a_q      <= '0;
+      first_pass_q <= 1'b0;
+      acc2_q   <= '0;
       carry_q  <= 1'b0;
       e_q      <= '0;
       far_q    <= 1'b0;
@@ -117,15 +131,18 @@ module arc_radius_check #(
       pass_q   <= '0;
       bit_q    <= '0;
       second_q <= 1'b0;
-      acc_q    <= '0;
+      first_pass_q <= 1'b1;  // acc = 0
       far_q    <= 1'b0;
     end else if (active) begin
-      // Every clock: one bit through the adder, the accumulator one place round.
-      bit_q   <= last_bit ? '0 : bit_q + 1'b1;
+      // Every clock: one bit through the adder.
+      bit_q   <= next_bit;
       carry_q <= cout;
-      acc_q   <= {sum, acc_q[SqWidth-1:1]};
+      acc2_q  <= {acc2_q[0], cur[Acc]};
+      if (last_bit) first_pass_q <= 1'b0;
       unique case (phase_q)
         SumA, SumB: begin
+          // E's sign: its top bit, the last written by SumB.
+          if (last_bit) neg_q <= sum;
           if (last_bit) begin
             pass_q <= pass_q + 1'b1;
             if (pass_q == LastSumPass) begin
@@ -136,18 +153,14 @@ module arc_radius_check #(
           end
         end
         Copy: begin
-          a_q <= {acc_q[0], a_q[SqWidth-1:1]};
           if (last_bit) phase_q <= SumB;
         end
         Abs: begin
-          neg_q <= neg;
-          acc_q <= {1'b0, acc_q[SqWidth-1:1]};
           if (bit_q < BitWidth'(EWidth)) e_q <= {sum, e_q[EWidth-1:1]};
           else far_q <= far_q | sum;
           if (last_bit) phase_q <= Sq;
         end
         Sq: begin
-          a_q  <= {a_q[0], a_q[SqWidth-1:1]};
           le_q <= le_d;
           if (last_bit) begin
             pass_q <= pass_q + 1'b1;
@@ -156,6 +169,14 @@ module arc_radius_check #(
         end
         default: ;
       endcase
+    end
+  end
+
+  // The memory: one write and one read per running clock, no reset.
+  always_ff @(posedge clk_i) begin
+    if (active && !start_i) begin
+      bits[bit_q] <= next;
+      read_q      <= bits[next_bit];
     end
   end
 

@@ -1,15 +1,20 @@
 // Gate-level lock step: interp_top as synth_ice40 maps it (gate_netlist.sh: the mapped
-// netlist with the iCE40 cells' simulation models, verilated as Vinterp_top_gate) against
+// netlist with the iCE40 cells' simulation models, verilated as NCINTERP_GATE_MODEL) against
 // the golden model, every output after every clock, on a tape of lines and quadrant arcs of
 // both directions and on a tape whose arc ends off its circle (error 11 at the block's LF).
 // What it guards: that synthesis builds the machine the RTL simulation shows (docs/
 // verification.md); a 'x on a path that matters simulates right and synthesises wrong.
+// Built twice (tests/rtl/CMakeLists.txt): NCINTERP_GATE_MODEL names the verilated netlist,
+// and with NCINTERP_RTL_BIT_SERIAL it is interp_top with BitSerial (the boards'), played
+// against the golden model configured alike.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "Vinterp_top_gate.h"
+#define NCINTERP_STRINGIFY(x) #x
+#define NCINTERP_HEADER(model) NCINTERP_STRINGIFY(model.h)
+#include NCINTERP_HEADER(NCINTERP_GATE_MODEL)
 #include "frame_source.h"
 #include "interp_top.h"
 #include "tape.h"
@@ -31,9 +36,12 @@ std::string first_difference(const InterpOutputs& g, const InterpOutputs& r) {
 // Plays `text` on the gate-level netlist and the golden model, one frame per clock;
 // returns the golden outputs at the end, failing at the first clock where any differs.
 InterpOutputs play_in_lock_step(const std::string& text) {
-  const InterpConfig cfg = interp_config(1e6);
+  InterpConfig cfg = interp_config(1e6);
+#ifdef NCINTERP_RTL_BIT_SERIAL
+  cfg.bit_serial = true;
+#endif
   GoldenInterp golden(cfg);
-  VerilatedInterp<Vinterp_top_gate> gate(cfg);
+  VerilatedInterp<NCINTERP_GATE_MODEL> gate(cfg);
   golden.reset();
   FrameSource source(tape::add_parity(text), 1);
   EXPECT_TRUE(gate.same_as(golden.outputs())) << "after reset";
