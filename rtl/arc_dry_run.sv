@@ -13,10 +13,10 @@
 // Schedule: a pass is W clocks, one half-step; clock i of a pass reads bit i of every
 // register (the memory's registered read, addressed at clock i - 1) and writes it back, new
 // or unchanged, at address i. The first pass after the start reads the arc's words instead
-// (the memory still holds the previous arc): x_i[i], y_i[i], cnt_*_i[i], and acc = 2^(k-1). Pass p integrates axis C (X, Y,
-// Y, X, X, Y, ... by p mod 4). Pass p also applies the step that pass p - 1 decided, on
-// that pass's axis U: mag_U +- step and cnt_U - step, on two serial adders whose result
-// bits feed C's addend in the same clock. So the second half-step of an iteration sees
+// (the memory still holds the previous arc): x_i[i], y_i[i], cnt_*_i[i], and acc = 2^(k-1).
+// Pass p integrates axis C (X, Y, Y, X, X, Y, ... by p mod 4). Pass p also applies the
+// step that pass p - 1 decided, on that pass's axis U: mag_U +- step and cnt_U - step, on
+// two serial adders whose result bits feed C's addend in the same clock. So the second half-step of an iteration sees
 // the magnitude the first one just moved (the semi-implicit update), with no extra pass.
 // At clock k - 1 of a pass everything of that half-step is known (bits >= k are 0): the
 // carry out of the integrator is the step (if C has pulses left after U's update), and the
@@ -50,8 +50,9 @@ module arc_dry_run #(
   localparam int BitWidth = $clog2(IncWidth);
   localparam logic [BitWidth-1:0] LastBit = BitWidth'(IncWidth - 1);
 
-  // The registers by axis name, bit i at address i; cur_*: bit i of each at clock i (the
-  // memory's read, or the arc's words in the first pass: first_pass_q).
+  // bits: the registers, bit i of each at address i; cur: bit i of each at clock i (read_q,
+  // the memory's read, or the arc's words in the first pass: first_pass_q); next: what
+  // clock i writes back.
   // half_q: the pass's place in X Y Y X (C is Y at 1 and 2; U, the previous pass's axis,
   // is Y at 2 and 3). bit_q: i. pend_q: pass p - 1's step, applied in this pass; step_q:
   // this pass's step (from clock k - 1). carry_*_q: the serial adders' carries. zero_*_q:
@@ -83,8 +84,9 @@ module arc_dry_run #(
   assign next_bit  = bit_q == LastBit ? '0 : bit_q + 1'b1;
   // Bit i of each register; acc starts at 2^(k-1) (rounding to nearest, as the player's DDA
   // loads), whose bit i is 1 at i = k - 1 only.
-  assign cur = first_pass_q ? {top_bit, top_bit, x_i[bit_q], y_i[bit_q], cnt_x_i[bit_q], cnt_y_i[bit_q]}
-                            : read_q;  // AccX .. CntY
+  assign cur = first_pass_q ? {top_bit, top_bit, x_i[bit_q], y_i[bit_q],  // AccX .. CntY
+                               cnt_x_i[bit_q], cnt_y_i[bit_q]}
+                            : read_q;
 
   always_comb begin
     // Used only while running: don't-care ('x) otherwise (no gates, no evaluation).

@@ -2,10 +2,10 @@
 // input, word parser and arc preparation) against GoldenTapeDecoder, every clock: the
 // reader's ready, the held block and every field of it, the end, and the error with its code,
 // block and offset. Random word-heavy tapes: now and then a number over its word's limit,
-// a stray character, a wrong fraction or a parity error, small arcs; the reader and the block buffer at random speeds (the
-// handshakes stall both ways). The decoder both parallel and bit-serial (BitSerial: a
-// digit's x10 + d is a pass of NumWidth clocks, and its limit's verdict comes at the pass's
-// end), at the default widths and at narrow ones.
+// a stray character, a wrong fraction or a parity error, small arcs; the reader and the
+// block buffer at random speeds (the handshakes stall both ways). The decoder both parallel
+// and bit-serial (BitSerial: a digit's x10 + d is a pass of NumWidth clocks, and its
+// limit's verdict comes at the pass's end), at the default widths and at narrow ones.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -131,7 +131,11 @@ template <typename Model>
     check("err_offset_o", m.err_offset_o, g.error_offset());
   }
   if (diff.tellp() == 0) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << diff.str() << " [golden state " << int(g.state()) << " code " << int(g.error_code()) << " off " << g.error_offset() << "; rtl err " << int(m.err_o) << " code " << int(m.err_code_o) << " hold " << int(m.blk_valid_o) << "]";
+  // With the states, which tell a late error from a wrong one.
+  return ::testing::AssertionFailure()
+         << diff.str() << " (golden state " << int(g.state()) << ", error code "
+         << int(g.error_code()) << "; RTL err_o " << int(m.err_o) << ", err_code_o "
+         << int(m.err_code_o) << ", blk_valid_o " << int(m.blk_valid_o) << ")";
 }
 
 // How the tapes ended: a program decoded to its end, an error (by code).
@@ -142,7 +146,8 @@ struct Outcomes {
 
 // Plays `tapes` random tapes through the verilated decoder and its twin in lock step.
 template <typename Model>
-::testing::AssertionResult lockstep(const InterpConfig& c, int tapes, uint64_t seed, Outcomes& out) {
+::testing::AssertionResult lockstep(const InterpConfig& c, int tapes, uint64_t seed,
+                                   Outcomes& out) {
   std::mt19937_64 rng(seed);
   auto ctx = std::make_unique<VerilatedContext>();
   Model m(ctx.get());
