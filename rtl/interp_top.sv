@@ -32,8 +32,9 @@ module interp_top #(
   // The decoder's per-block arithmetic: 0 = parallel; 1 = bit-serial, the board's choice
   // (docs/interpolator.md 3.2 and 3.5): an arc's dry run on arc_dry_run.sv, 2W clocks per
   // iteration instead of a second circle DDA, and each digit's x10 + d a pass of NumWidth
-  // clocks on a one-bit adder (tape_word_parser.sv). Fewer logic cells (docs/bit-widths.md
-  // section 6); 3.5 says when the slower dry run leaves gaps.
+  // clocks on a one-bit adder (tape_word_parser.sv); and the block buffer in block RAM,
+  // whose registered read makes a block loadable one clock later (block_buffer.sv). Fewer
+  // logic cells (docs/bit-widths.md section 6); 3.5 says when the slower dry run leaves gaps.
   parameter bit BitSerial   = 1'b0
 ) (
   input  logic                    clk_i,
@@ -157,7 +158,9 @@ module interp_top #(
   assign dec_block.grow_x = dec_grow_x;
   assign dec_block.grow_y = dec_grow_y;
 
-  block_buffer #(.Width(BlockWidth)) u_buffer (
+  // With BitSerial the buffer is a block RAM, but N (the first field: the top bits) stays in
+  // flip-flops, so a board that leaves block_n_o unused loses its logic (block_buffer.sv).
+  block_buffer #(.Width(BlockWidth), .InRam(BitSerial), .FlopBits(SeqWidth)) u_buffer (
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i(dec_block),
@@ -220,8 +223,10 @@ module interp_top #(
     end else if (busy_q && finished) begin
       busy_d = 1'b0;  // finished with no next block: a gap (or the end)
     end
-    error_d = error_q | (dec_err & !busy_q & !next_valid);
-    done_d  = done_q | (dec_end & dec_tape_ended & !busy_q & !next_valid);
+    // buf_ready: the buffer is empty (with BitSerial, a block just taken is held but not
+    // yet readable: next_valid is still low).
+    error_d = error_q | (dec_err & !busy_q & buf_ready);
+    done_d  = done_q | (dec_end & dec_tape_ended & !busy_q & buf_ready);
   end
 
   always_ff @(posedge clk_i) begin
