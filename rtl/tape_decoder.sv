@@ -260,17 +260,19 @@ module tape_decoder #(
                 if (word_end) begin
                   unique case (word_letter)
                     interp_pkg::ChN: n_d = word_value[SeqWidth-1:0];
+                    // A G or M code is <= 99 (the word parser's limit for them): its
+                    // low 7 bits are all of it, so only those are compared.
                     interp_pkg::ChG: begin
-                      if (word_value >= NumWidth'(1) && word_value <= NumWidth'(3)) begin
+                      if (word_value[6:0] >= 7'd1 && word_value[6:0] <= 7'd3) begin
                         motion_d = word_value[1:0];  // G01, G02, G03
                         motion_blk_d = 1'b1;
-                      end else if (!(word_value == NumWidth'(17) || word_value == NumWidth'(21) ||
-                                     word_value == NumWidth'(91) || word_value == NumWidth'(93))) begin
+                      end else if (!(word_value[6:0] == 7'd17 || word_value[6:0] == 7'd21 ||
+                                     word_value[6:0] == 7'd91 || word_value[6:0] == 7'd93)) begin
                         word_ok = 1'b0;
                       end
                     end
                     interp_pkg::ChM: begin
-                      if (word_value == NumWidth'(2) || word_value == NumWidth'(30)) end_blk_d = 1'b1;
+                      if (word_value[6:0] == 7'd2 || word_value[6:0] == 7'd30) end_blk_d = 1'b1;
                       else word_ok = 1'b0;
                     end
                     interp_pkg::ChX: begin
