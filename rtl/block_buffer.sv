@@ -17,7 +17,7 @@
 // out_valid_o: the block can be read (and popped): from the edge after the take with the
 // register; with the RAM one edge later, when the registered read has fetched it.
 // Golden twin: the section "Block buffer" of GoldenInterp::tick()
-// (sc_model/golden/interp_top.h), whose next_fresh_ is the RAM's extra clock.
+// (sc_model/golden/interp_top.h), whose next_readable() is the RAM's extra clock.
 module block_buffer #(
   parameter int Width    = 8,
   parameter bit InRam    = 1'b0,

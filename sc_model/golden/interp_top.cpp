@@ -41,7 +41,8 @@ GoldenInterp::GoldenInterp(const InterpConfig& cfg) : cfg_(cfg), decoder_(cfg) {
 void GoldenInterp::reset() {
   decoder_.reset();
   next_ = DecodedBlock{};
-  next_valid_ = next_fresh_ = false;
+  next_valid_ = false;
+  next_taken_cycle_ = 0;
   feed_step_ = phase_ = 0;
   saturated_ = false;
   dir_[0] = dir_[1] = false;
@@ -81,7 +82,7 @@ void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {
   if (decoder_.state() == GoldenTapeDecoder::State::kHold && buffer_empty) {
     next_ = decoder_.block();  // the buffer takes the held block at this edge
     next_valid_ = true;
-    next_fresh_ = cfg_.bit_serial;
+    next_taken_cycle_ = cycle_;
   }
   decoder_.edge(in, buffer_empty);
   out_.frame_ready = decoder_.ready();

@@ -64,12 +64,14 @@ class GoldenInterp {
   uint64_t pos_mask_, pos_sign_;
 
   GoldenTapeDecoder decoder_;
-  // Block buffer ("next" register). next_fresh_: with bit_serial the buffer is a block
-  // RAM whose registered read fetches a block the edge after it is taken, so the block
-  // taken at the last edge cannot load yet.
+  // Block buffer ("next" register). next_taken_cycle_: the cycle of the edge that took the
+  // block. With bit_serial the buffer is a block RAM whose registered read fetches a block
+  // the edge after it is taken, so it cannot load in the next cycle (next_readable()). A
+  // cycle number, not a flag cleared every tick: the hot path stores nothing for it.
   DecodedBlock next_;
   bool next_valid_ = false;
-  bool next_fresh_ = false;
+  uint64_t next_taken_cycle_ = 0;
+  bool next_readable() const { return !cfg_.bit_serial || cycle_ != next_taken_cycle_ + 1; }
   // Player: feed generator and the DDA (lines and arcs).
   uint64_t feed_step_ = 0;  // S = F * N
   uint64_t phase_ = 0;
@@ -100,7 +102,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
     status_edge();
-  const bool load = !buffer_empty && !next_fresh_ && (!busy || finishing);
+  const bool load = !buffer_empty && (!busy || finishing) && next_readable();
 
   out_.step_x = false;
   out_.step_y = false;
@@ -126,7 +128,6 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     out_.feed_saturated = false;
   }
   if (load) load_block();  // Block buffer (rtl/block_buffer.sv) -> player
-  next_fresh_ = false;     // frame_edge() sets it again if the buffer takes a block
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
 }
