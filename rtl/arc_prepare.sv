@@ -64,10 +64,18 @@ module arc_prepare #(
   );
 
   if (BitSerial) begin : g_serial_dry_run
-    arc_dry_run #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
-      .clk_i, .rst_ni, .start_i(start), .run_i(running_q), .k_i(k),
-      .x_i(x0), .y_i(y0), .cnt_x_i(dx_i), .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y),
-      .iterate_o(dry_iterate), .done_o(dry_done)
+    // The dry run emits no pulses and has no direction; the held block's words stay.
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic dry_carry_x, dry_carry_y, dry_step_x, dry_step_y, dry_dir_x, dry_dir_y, dry_words;
+    /* verilator lint_on UNUSEDSIGNAL */
+    dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
+      .clk_i, .rst_ni,
+      .load_i(start), .line_i(1'b0), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i),
+      .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
+      .strobe_i(running_q), .iterate_o(dry_iterate),
+      .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),
+      .dir_x_o(dry_dir_x), .step_y_o(dry_step_y), .dir_y_o(dry_dir_y),
+      .words_o(dry_words), .done_o(dry_done)
     );
   end else begin : g_parallel_dry_run
     // The dry run emits no pulses and has no direction.

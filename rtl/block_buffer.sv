@@ -8,16 +8,20 @@
 //   1: a block RAM (the board's choice, with interp_top's BitSerial): Width flip-flops are
 //      Width logic cells on an iCE40, while its block RAMs (16 on the HX1K) sit idle. The
 //      RAM has two slots used in turn (the block taken is written to the slot not being
-//      read, so no edge reads and writes one address) and a registered read of the slot
-//      last written, every clock. The top FlopBits bits stay in flip-flops beside it:
-//      interp_top puts N there, which a board leaves unused, so synthesis removes N's
-//      logic (it cannot see through a RAM which of its bits are read).
+//      read, so no edge reads and writes one address) and a registered read, every clock,
+//      of the slot last written, or while hold_i of the slot popped last: the bit-serial
+//      player (dda_serial.sv) reads a block's words from here in its first pass, while
+//      the next block can already be taken into the other slot. The top FlopBits bits
+//      stay in flip-flops beside it: interp_top puts N there, which a board leaves unused,
+//      so synthesis removes N's logic (it cannot see through a RAM which of its bits are
+//      read).
 // Timing: in_ready_o = empty (a register), so a block is taken at an edge where the
 // buffer is empty, never in the edge that empties it; pop_i empties it at that edge.
 // out_valid_o: the block can be read (and popped): from the edge after the take with the
-// register; with the RAM one edge later, when the registered read has fetched it.
+// register; with the RAM once the registered read shows its slot, one edge after the take
+// or after hold_i falls.
 // Golden twin: the section "Block buffer" of GoldenInterp::tick()
-// (sc_model/golden/interp_top.h), whose next_readable() is the RAM's extra clock.
+// (sc_model/golden/interp_top.h; slot_ and shown_ are the RAM's).
 module block_buffer #(
   parameter int Width    = 8,
   parameter bit InRam    = 1'b0,
@@ -29,13 +33,14 @@ module block_buffer #(
   output logic             in_ready_o,
   input  logic [Width-1:0] in_block_i,
   input  logic             pop_i,
+  input  logic             hold_i,     // with InRam: show the popped block's slot
   output logic             out_valid_o,
   output logic [Width-1:0] out_block_o
 );
 
-  // full_q: a block is held; fresh_q: it was taken at the last edge (not yet readable
-  // from the RAM). block_q: the register, or the RAM's read register.
-  logic             full_q, full_d, fresh_q;
+  // full_q: a block is held. block_q: the register, or the RAM's read register; shown: the
+  // held block is what block_q shows (always with the register).
+  logic             full_q, full_d, shown;
   logic [Width-1:0] block_q;
   logic             take;
 
@@ -51,40 +56,48 @@ module block_buffer #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      full_q  <= 1'b0;
-      fresh_q <= 1'b0;
-    end else begin
-      full_q  <= full_d;
-      fresh_q <= InRam && take;
-    end
+    if (!rst_ni) full_q <= 1'b0;
+    else         full_q <= full_d;
   end
 
   if (InRam) begin : g_ram
-    // slot_q: the slot written last (the one read). Neither the RAM nor the read register
-    // needs a reset: the block is read only once it is valid (the flip-flop part loads at
-    // the take itself).
+    // slot_q: the slot written last. read_slot: the slot read at this edge, the popped
+    // block's while hold_i (the held block, if any, is then in the other one); shown_q:
+    // the slot block_q holds. Neither the RAM nor the read register needs a reset: a block
+    // is read only once it is shown (the flip-flop part loads at the take itself).
     localparam int RamBits = Width - FlopBits;
     (* ram_style = "block" *) logic [RamBits-1:0] slots [2];
-    logic slot_q;
+    logic slot_q, shown_q, read_slot;
+    assign read_slot = slot_q ^ (hold_i && full_q);
     always_ff @(posedge clk_i) begin
-      if (!rst_ni) slot_q <= 1'b0;
-      else if (take) slot_q <= !slot_q;
+      if (!rst_ni) begin
+        slot_q  <= 1'b0;
+        shown_q <= 1'b0;
+      end else begin
+        if (take) slot_q <= !slot_q;
+        shown_q <= read_slot;
+      end
     end
     always_ff @(posedge clk_i) begin
       if (take) slots[!slot_q] <= in_block_i[RamBits-1:0];
-      block_q[RamBits-1:0] <= slots[slot_q];
+      block_q[RamBits-1:0] <= slots[read_slot];
       if (take) block_q[Width-1:RamBits] <= in_block_i[Width-1:RamBits];
     end
+    assign shown = !hold_i && shown_q == slot_q;
   end else begin : g_register
     always_ff @(posedge clk_i) begin
       if (!rst_ni) block_q <= '0;
       else if (take) block_q <= in_block_i;
     end
+    assign shown = 1'b1;
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic unused_hold;
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign unused_hold = hold_i;  // no RAM, no slot to show
   end
 
   assign in_ready_o  = !full_q;
-  assign out_valid_o = full_q && !fresh_q;
+  assign out_valid_o = full_q && shown;
   assign out_block_o = block_q;
 
 endmodule

@@ -6,14 +6,23 @@
 // reaching M issues one iteration strobe and subtracts M. So N iterations take M/F clocks,
 // rounded up (docs/interpolator.md 5.2). If S >= M the block wants more than one iteration
 // per clock: it is saturated and runs one iteration every clock instead.
-// Timing: at the load edge step_q = phase_q = S (the load clock counts as the first add)
-// and saturated_q is set; from then on, while run_i, strobe_o is combinational from the
-// registers and acts in the same edge as the DDA iteration it triggers.
+// Timing: at the load edge step_q = S, phase_q = S << LeadBits (the load clock counts as
+// the first add) and saturated_q is set; from then on, while run_i, strobe_o is
+// combinational from the registers and acts in the same edge as the DDA iteration it
+// starts. LeadBits is 0 for dda_circle.sv, whose iteration is that edge. dda_serial.sv
+// (BitSerial) takes 2^LeadBits clocks per iteration and a block loads only when its
+// predecessor's last iteration has ended, 2^LeadBits - 1 clocks after the one-clock DDA
+// would load it: the phase starts 2^LeadBits adds ahead, so iteration j of a block still
+// ends ceil(j M / S) - 1 clocks after its load and every block lasts ceil(M / F) clocks.
+// Strobes then come at least 2^LeadBits clocks apart, each when the DDA is idle, as long
+// as S << LeadBits < M; a block with S << LeadBits >= M is saturated (docs/interpolator.md
+// 5.2).
 // Golden twin: the section "Feed generator" of GoldenInterp::tick()
 // (sc_model/golden/interp_top.h).
 module feed_generator #(
   parameter int StepWidth    = 49,
-  parameter int ModulusWidth = 48
+  parameter int ModulusWidth = 48,
+  parameter int LeadBits     = 0
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -25,10 +34,11 @@ module feed_generator #(
   output logic                    saturated_o
 );
 
-  // Only a block that is not saturated uses the phase, and then S < M: S, the phase
-  // (< M) and phase + S (< 2M) need ModulusWidth (+ 1) bits whatever StepWidth is.
+  // Only a block that is not saturated uses the phase, and then S << LeadBits < M: S, the
+  // phase (< M) and phase + S (< 2M) need ModulusWidth (+ 1) bits whatever StepWidth is.
   localparam int PhaseWidth = ModulusWidth + 1;
-  localparam int CmpWidth   = StepWidth > ModulusWidth ? StepWidth : ModulusWidth;
+  localparam int CmpWidth   = StepWidth + LeadBits > ModulusWidth ? StepWidth + LeadBits
+                                                                  : ModulusWidth;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
   // logic depends on an input combinationally). Valid from the first clock on, long before
@@ -45,6 +55,9 @@ module feed_generator #(
 
   logic [PhaseWidth-1:0] sum, modulus, over;
   logic                  reached, borrow;
+  logic [CmpWidth-1:0]   lead_step;  // S << LeadBits
+
+  assign lead_step = CmpWidth'(step_i) << LeadBits;
 
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
@@ -57,8 +70,8 @@ module feed_generator #(
     saturated_d = saturated_q;
     if (load_i) begin
       step_d      = PhaseWidth'(step_i);
-      phase_d     = PhaseWidth'(step_i);
-      saturated_d = CmpWidth'(step_i) >= CmpWidth'(modulus_q);
+      phase_d     = PhaseWidth'(lead_step);
+      saturated_d = lead_step >= CmpWidth'(modulus_q);
     end else if (run_i) begin
       if (saturated_q) begin
         strobe_o = 1'b1;

@@ -29,12 +29,14 @@ module interp_top #(
   parameter int OffsetWidth    = 32,
   // Width of feed_modulus_i.
   parameter int ModulusWidth   = 48,
-  // The decoder's per-block arithmetic: 0 = parallel; 1 = bit-serial, the board's choice
-  // (docs/interpolator.md 3.2 and 3.5): an arc's dry run on arc_dry_run.sv, 2W clocks per
-  // iteration instead of a second circle DDA, and each digit's x10 + d a pass of NumWidth
-  // clocks on a one-bit adder (tape_word_parser.sv); and the block buffer in block RAM,
-  // whose registered read makes a block loadable one clock later (block_buffer.sv). Fewer
-  // logic cells (docs/bit-widths.md section 6); 3.5 says when the slower dry run leaves gaps.
+  // The arithmetic: 0 = parallel; 1 = bit-serial, the board's choice (docs/interpolator.md
+  // 3.2, 3.5, 4 and 5.5): the DDA, of the player and of an arc's dry run, is dda_serial.sv,
+  // 2P clocks per iteration (P = W rounded up to a power of two) instead of one, each
+  // digit's x10 + d a pass of NumWidth clocks on a one-bit adder (tape_word_parser.sv),
+  // and the block buffer in block RAM, whose registered read makes a block loadable one
+  // clock later (block_buffer.sv). Fewer logic cells (docs/bit-widths.md section 6); the
+  // player's top rate is one iteration per 2P clocks, and 3.5 says when the slower dry run
+  // leaves gaps.
   parameter bit BitSerial   = 1'b0
 ) (
   input  logic                    clk_i,
@@ -120,8 +122,9 @@ module interp_top #(
   logic                   next_grow_x, next_grow_y, next_arc;
 
   // Player: the feed generator's strobes iterate the DDA; its carries count the positions.
-  // finished: the playing block's iterations are over (the DDA's done).
-  logic              load, strobe, finished, saturated;
+  // finished: the playing block's iterations are over (the DDA's done). words: the serial
+  // DDA still reads the playing block's words from the buffer.
+  logic              load, strobe, finished, saturated, words;
   logic              carry_x, carry_y;
 
   // busy_q: a block is loaded and not finished. block_n_q: its N (the last one when idle).
@@ -164,7 +167,7 @@ module interp_top #(
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i(dec_block),
-    .pop_i(load),
+    .pop_i(load), .hold_i(words),
     .out_valid_o(next_valid), .out_block_o(next_block)
   );
 
@@ -185,7 +188,11 @@ module interp_top #(
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || finished);
 
-  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth)) u_feed (
+  // The serial DDA's iteration takes 2^LeadBits = 2P clocks (dda_serial.sv).
+  localparam int LeadBits = BitSerial ? $clog2(IncWidth) + 1 : 0;
+
+  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits))
+  u_feed (
     .clk_i, .rst_ni,
     .load_i(load), .step_i(next_step),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
@@ -193,17 +200,45 @@ module interp_top #(
   );
 
   // A line's magnitudes are its increments; an arc's start about its centre is (-I, -J):
-  // its magnitudes are |I|, |J|.
+  // its magnitudes are |I|, |J|. The player's DDA is dda_circle, or with BitSerial
+  // dda_serial: u_circle stays outside a generate block so that the default's VCD scopes
+  // keep their names (docs/waves.md); with BitSerial it never loads and synthesis removes
+  // it.
+  logic circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x, circle_step_y;
+  logic circle_dir_y, circle_done;
   dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_circle (
     .clk_i, .rst_ni,
-    .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_i(next_i), .y_i(next_j),
-    .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
-    .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
-    .strobe_i(strobe),
-    .carry_x_o(carry_x), .carry_y_o(carry_y),
-    .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
-    .done_o(finished)
+    .load_i(load && !BitSerial), .line_i(!next_arc), .k_i(next_k), .x_i(next_i),
+    .y_i(next_j), .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x),
+    .grow_y_i(next_grow_y), .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
+    .strobe_i(strobe && !BitSerial),
+    .carry_x_o(circle_carry_x), .carry_y_o(circle_carry_y),
+    .step_x_o(circle_step_x), .dir_x_o(circle_dir_x), .step_y_o(circle_step_y),
+    .dir_y_o(circle_dir_y), .done_o(circle_done)
   );
+  if (BitSerial) begin : g_serial
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic iterate;  // the feed generator's strobes are the iterations
+    logic [6:0] unused_circle;
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign unused_circle = {circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x,
+                            circle_step_y, circle_dir_y, circle_done};
+    dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth)) u_serial (
+      .clk_i, .rst_ni,
+      .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_i(next_i), .y_i(next_j),
+      .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
+      .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
+      .strobe_i(strobe), .iterate_o(iterate),
+      .carry_x_o(carry_x), .carry_y_o(carry_y),
+      .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
+      .words_o(words), .done_o(finished)
+    );
+  end else begin : g_parallel
+    assign {carry_x, carry_y, step_x_o, dir_x_o, step_y_o, dir_y_o, finished} =
+        {circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x, circle_step_y,
+         circle_dir_y, circle_done};
+    assign words = 1'b0;
+  end
 
   position_counter #(.PosWidth(PosWidth)) u_pos_x (
     .clk_i, .rst_ni, .count_i(carry_x), .up_i(dir_x_o), .pos_o(pos_x_o)

@@ -28,9 +28,9 @@ uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
     const uint64_t big = static_cast<uint64_t>(std::max({std::llabs(b.tape.dx), std::llabs(b.tape.dy),
                                                          std::llabs(b.tape.i), std::llabs(b.tape.j)}));
     const LineSchedule s(big, 0, b.tape.feed, cfg.feed_modulus);
-    total += std::max(s.duration(), 4 * s.iterations() + 4) + 4;
-    if (b.is_arc())
-      total += ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, 4 * s.iterations(), s.k() + 2);
+    const uint64_t iteration = cfg.bit_serial ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
+    total += std::max(s.duration(), 4 * s.iterations() * iteration + 4) + 4;
+    if (b.is_arc()) total += ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, 4 * s.iterations());
   }
   return total + total / 8;
 }

@@ -12,7 +12,7 @@ ArcPrepare::ArcPrepare(unsigned inc_width, bool bit_serial)
 void ArcPrepare::reset() {
   running_ = false;
   dry_ = CircleDda{};
-  serial_dry_ = ArcDryRun(inc_width_);
+  serial_dry_ = SerialDda(inc_width_);
   radius_ = ArcRadiusCheck(inc_width_);
 }
 
@@ -27,7 +27,7 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w) {
       r.error = g_.error;
     }
     if (serial_)
-      serial_dry_.start(g_);
+      serial_dry_.load(g_, !w.dx_neg, !w.dy_neg);
     else
       dry_.load(g_, !w.dx_neg, !w.dy_neg);
     radius_.start();
@@ -39,8 +39,8 @@ ArcPrepare::Result ArcPrepare::edge(const ArcWords& w) {
   bool dry_done, dry_iterate;
   if (serial_) {
     dry_done = serial_dry_.done();
-    // It steps at every running edge, the last one too (its run_i is running_q).
-    dry_iterate = serial_dry_.step(g_);
+    // It is strobed at every running edge, the last one too (its strobe_i is running_q).
+    dry_iterate = serial_dry_.edge(true).iterate;
   } else {
     dry_done = dry_.done();
     dry_iterate = !dry_done;

@@ -7,16 +7,17 @@
 // N: the decoder adds F at each iteration it marks, so the block carries S = F * N, and the
 // feed generator plays its N iterations in M / F clocks, like the 2^k iterations of a line
 // (docs/circle-dda.md section 4). The dry run is a CircleDda, one iteration per clock, or
-// with BitSerial the bit-serial ArcDryRun, 2W clocks per iteration. Both run in
-// parallel with the check; a failed radius check stops the dry run.
+// with BitSerial the bit-serial SerialDda, 2P clocks per iteration (P = W rounded up to a
+// power of two). Both run in parallel with the check; a failed radius check stops the dry
+// run.
 #pragma once
 #include <algorithm>
 #include <cstdint>
 
-#include "arc_dry_run.h"
 #include "arc_geometry.h"
 #include "arc_radius_check.h"
 #include "dda_circle.h"
+#include "dda_serial.h"
 #include "interp_ports.h"
 
 namespace ncinterp {
@@ -27,9 +28,9 @@ class ArcPrepare {
 
   void reset();
 
-  // Clocks from the start edge of a good arc of n iterations (bit length k) to done.
-  static uint64_t clocks(unsigned inc_width, bool bit_serial, uint64_t n, unsigned k) {
-    const uint64_t dry = bit_serial ? ArcDryRun::clocks(inc_width, n, k) : n;
+  // Clocks from the start edge of a good arc of n iterations to done.
+  static uint64_t clocks(unsigned inc_width, bool bit_serial, uint64_t n) {
+    const uint64_t dry = bit_serial ? 2 * uint64_t{SerialDda::pass_length(inc_width)} * n : n;
     return std::max(dry, ArcRadiusCheck::clocks(inc_width)) + 1;
   }
 
@@ -55,7 +56,7 @@ private:
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
   ArcGeometry g_;           // of the arc being prepared, from its start edge
   CircleDda dry_;           // the dry-run DDA (one iteration per clock)
-  ArcDryRun serial_dry_;    // the bit-serial dry run (2W clocks per iteration)
+  SerialDda serial_dry_;    // the bit-serial dry run (2P clocks per iteration)
   ArcRadiusCheck radius_;   // the bit-serial radius check ((5W + 4)(2W + 4) clocks)
 };
 

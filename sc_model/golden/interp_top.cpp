@@ -19,7 +19,8 @@ void require(bool ok, const char* what) {
 
 }  // namespace
 
-GoldenInterp::GoldenInterp(const InterpConfig& cfg) : cfg_(cfg), decoder_(cfg) {
+GoldenInterp::GoldenInterp(const InterpConfig& cfg)
+    : cfg_(cfg), decoder_(cfg), serial_(cfg.inc_width) {
   // The phase sum is formed only when not saturated (S < M < 2^62), so it cannot overflow.
   // |dx|, |dy| are held in 32 bits; a line's S = F << k (FeedWidth + IncWidth bits) in 64.
   // An arc's S = F * N may need one bit more: ArcPrepare keeps it exact below 2^63 and
@@ -33,6 +34,8 @@ GoldenInterp::GoldenInterp(const InterpConfig& cfg) : cfg_(cfg), decoder_(cfg) {
   require(cfg.offset_width >= 1 && cfg.offset_width <= 32, "offset_width must be 1..32");
   require(cfg.frac_digits <= 9 && cfg.feed_frac_digits <= 9, "fraction digits must be <= 9");
   modulus_ = cfg.feed_modulus & low_mask(cfg.modulus_width);
+  lead_bits_ = cfg.bit_serial ? SerialDda::lead_bits(cfg.inc_width) : 0;
+  saturation_step_ = (modulus_ + (uint64_t{1} << lead_bits_) - 1) >> lead_bits_;
   pos_mask_ = low_mask(cfg.pos_width);
   pos_sign_ = 1ull << (cfg.pos_width - 1);
   reset();
@@ -42,11 +45,12 @@ void GoldenInterp::reset() {
   decoder_.reset();
   next_ = DecodedBlock{};
   next_valid_ = false;
-  next_taken_cycle_ = 0;
+  slot_ = shown_ = false;
   feed_step_ = phase_ = 0;
   saturated_ = false;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
+  serial_ = SerialDda(cfg_.inc_width);
   out_ = InterpOutputs{};
   out_.frame_ready = decoder_.ready();
   cycle_ = 0;
@@ -59,16 +63,26 @@ void GoldenInterp::load_block() {
   const DecodedBlock& b = next_;
   if (b.is_arc()) {
     // The decoder has checked the arc; the geometry gives the circle DDA's start.
-    circle_.load(arc_geometry(b.arc_words(), cfg_.inc_width), !b.dx_neg, !b.dy_neg);
+    const ArcGeometry g = arc_geometry(b.arc_words(), cfg_.inc_width);
+    if (cfg_.bit_serial)
+      serial_.load(g, !b.dx_neg, !b.dy_neg);
+    else
+      circle_.load(g, !b.dx_neg, !b.dy_neg);
   } else {
     // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
-    circle_.load_line(bit_length(b.dx | b.dy), b.dx, b.dy, !b.dx_neg, !b.dy_neg);
+    const unsigned k = bit_length(b.dx | b.dy);
+    if (cfg_.bit_serial)
+      serial_.load_line(k, b.dx, b.dy, !b.dx_neg, !b.dy_neg);
+    else
+      circle_.load_line(k, b.dx, b.dy, !b.dx_neg, !b.dy_neg);
   }
   dir_[0] = !b.dx_neg;
   dir_[1] = !b.dy_neg;
+  // Feed generator: the phase starts lead_bits_ doublings of S ahead (only an unsaturated
+  // block uses it, and then S << lead_bits_ < M).
   feed_step_ = b.step;
-  phase_ = feed_step_;
-  saturated_ = feed_step_ >= modulus_;
+  saturated_ = feed_step_ >= saturation_step_;
+  phase_ = saturated_ ? 0 : feed_step_ << lead_bits_;
   next_valid_ = false;
   out_.dir_x = dir_[0];
   out_.dir_y = dir_[1];
@@ -82,7 +96,7 @@ void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {
   if (decoder_.state() == GoldenTapeDecoder::State::kHold && buffer_empty) {
     next_ = decoder_.block();  // the buffer takes the held block at this edge
     next_valid_ = true;
-    next_taken_cycle_ = cycle_;
+    slot_ = !slot_;  // bit_serial: written to the other slot, which becomes the one shown
   }
   decoder_.edge(in, buffer_empty);
   out_.frame_ready = decoder_.ready();
@@ -143,7 +157,7 @@ void GoldenInterp::fault_edge() {
         break;
       case Fault::kAccumulatorOffByOne:
         if (!out_.busy) break;
-        circle_.add_to_integrator(a, 1);
+        player_dda().add_to_integrator(a, 1);
         again = false;
         break;
       case Fault::kWrongDirection:

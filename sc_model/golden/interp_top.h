@@ -1,8 +1,8 @@
 // Golden cycle model of the interpolator: the C++ twin of rtl/interp_top.sv. Twins of the
 // submodules: GoldenTapeDecoder (rtl/tape_decoder.sv), CircleDda (rtl/dda_circle.sv, which
-// plays lines and arcs); the small ones are sections of tick() named after them: "Block
-// buffer" (block_buffer.sv), "Feed generator" (feed_generator.sv), "Position counters"
-// (position_counter.sv).
+// plays lines and arcs) or with BitSerial SerialDda (rtl/dda_serial.sv); the small ones are
+// sections of tick() named after them: "Block buffer" (block_buffer.sv), "Feed generator"
+// (feed_generator.sv), "Position counters" (position_counter.sv).
 // Idea: one tick() is one rising clock edge. Every register of the RTL exists here with the
 // same reset value and next-state rule (docs/interpolator.md), so after each tick the
 // outputs equal the RTL's outputs after the same edge; the cosim checks this every clock.
@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "dda_circle.h"
+#include "dda_serial.h"
 #include "tape_decoder.h"
 #include "interp_ports.h"
 
@@ -37,7 +38,12 @@ class GoldenInterp {
   void reset();
 
   // One rising clock edge with these inputs.
-  inline void tick(const InterpInputs& in);
+  inline void tick(const InterpInputs& in) {
+    if (cfg_.bit_serial)
+      tick_bit_serial(in);
+    else
+      tick_parallel(in);
+  }
 
   const InterpOutputs& outputs() const { return out_; }
   const InterpConfig& config() const { return cfg_; }
@@ -48,6 +54,8 @@ class GoldenInterp {
   void inject(const Fault& fault);
 
  private:
+  inline void tick_parallel(const InterpInputs& in);    // the player on CircleDda
+  inline void tick_bit_serial(const InterpInputs& in);  // the player on SerialDda
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
   void status_edge();                       // done / error when the player is empty
@@ -64,20 +72,26 @@ class GoldenInterp {
   uint64_t pos_mask_, pos_sign_;
 
   GoldenTapeDecoder decoder_;
-  // Block buffer ("next" register). next_taken_cycle_: the cycle of the edge that took the
-  // block. With bit_serial the buffer is a block RAM whose registered read fetches a block
-  // the edge after it is taken, so it cannot load in the next cycle (next_readable()). A
-  // cycle number, not a flag cleared every tick: the hot path stores nothing for it.
+  // Block buffer ("next" register). With bit_serial it is a block RAM of two slots whose
+  // registered read shows one slot: the last one written (slot_), but the playing block's
+  // while the player still reads its words (SerialDda::words()); shown_ is the slot the
+  // read register holds, and a block can load only once it is shown (block_buffer.sv).
   DecodedBlock next_;
   bool next_valid_ = false;
-  uint64_t next_taken_cycle_ = 0;
-  bool next_readable() const { return !cfg_.bit_serial || cycle_ != next_taken_cycle_ + 1; }
-  // Player: feed generator and the DDA (lines and arcs).
+  bool slot_ = false, shown_ = false;
+  // Player: feed generator and the DDA (lines and arcs). The feed generator's lead
+  // (bit_serial: the serial DDA's iteration takes 2^lead_bits_ clocks): the phase starts
+  // at S << lead_bits_, and a block is saturated from S >= saturation_step_ (S << lead_bits_
+  // >= M).
+  unsigned lead_bits_ = 0;
+  uint64_t saturation_step_ = 0;
   uint64_t feed_step_ = 0;  // S = F * N
   uint64_t phase_ = 0;
   bool saturated_ = false;
   bool dir_[2] = {false, false};
-  CircleDda circle_;
+  CircleDda circle_;   // the player's DDA, or with bit_serial:
+  SerialDda serial_;
+  CircleDda& player_dda() { return cfg_.bit_serial ? serial_.dda() : circle_; }
   // Outputs: the output registers themselves.
   InterpOutputs out_;
 
@@ -91,7 +105,7 @@ class GoldenInterp {
   uint64_t fault_block_ = 0;
 };
 
-inline void GoldenInterp::tick(const InterpInputs& in) {
+inline void GoldenInterp::tick_parallel(const InterpInputs& in) {
   ++cycle_;
   // Every decision below reads the registers as they were before this edge (the _q
   // values): they are taken first, then the player, the buffer and the decoder update.
@@ -102,7 +116,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
     status_edge();
-  const bool load = !buffer_empty && (!busy || finishing) && next_readable();
+  const bool load = !buffer_empty && (!busy || finishing);
 
   out_.step_x = false;
   out_.step_y = false;
@@ -128,6 +142,46 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     out_.feed_saturated = false;
   }
   if (load) load_block();  // Block buffer (rtl/block_buffer.sv) -> player
+  if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
+  if (cycle_ == fault_cycle_) fault_edge();
+}
+
+// The same with the bit-serial player (docs/interpolator.md 5.5): the DDA takes 2P clocks
+// per iteration and reads a block's words from the buffer in its first pass.
+inline void GoldenInterp::tick_bit_serial(const InterpInputs& in) {
+  ++cycle_;
+  using State = GoldenTapeDecoder::State;
+  const bool busy = out_.busy;
+  const bool finishing = busy && serial_.done();
+  const bool buffer_empty = !next_valid_;
+  const bool holding = serial_.words();
+  const State dstate = decoder_.state();
+  if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
+    status_edge();
+  // Block buffer: a block is readable once its slot is shown and the player holds none.
+  const bool load = !buffer_empty && !holding && shown_ == slot_ && (!busy || finishing);
+  shown_ = slot_ != (holding && !buffer_empty);
+
+  out_.step_x = false;
+  out_.step_y = false;
+  if (busy && !finishing) {
+    // Feed generator: a strobe always finds the DDA idle unless the block is saturated.
+    bool strobe = saturated_;
+    if (!strobe) {
+      const uint64_t p = phase_ + feed_step_;
+      strobe = p >= modulus_;
+      phase_ = strobe ? p - modulus_ : p;
+    }
+    const SerialDda::Edge e = serial_.edge(strobe);
+    if (e.x) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
+    if (e.y) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));
+    out_.step_x = e.x;
+    out_.step_y = e.y;
+  } else if (finishing && !load) {
+    out_.busy = false;
+    out_.feed_saturated = false;
+  }
+  if (load) load_block();
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
 }

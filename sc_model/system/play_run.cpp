@@ -38,10 +38,11 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     unsigned k = 0;
     while (k < 62 && (m >> k) != 0) ++k;
     const uint64_t iterations = arc ? 2ull << k : 1ull << k;
-    const uint64_t prepare =
-        arc ? ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, iterations, k) : 0;
+    const uint64_t prepare = arc ? ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, iterations) : 0;
     const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
-    total += std::max(iterations + 1, programmed) + prepare + 3;
+    // Saturated, one iteration per clock (per 2P clocks with BitSerial: SerialDda).
+    const uint64_t iteration = cfg.bit_serial ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
+    total += std::max(iterations * iteration + 1, programmed) + prepare + 3;
   }
   return 2 * total + 100000;
 }

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <random>
 
-#include "arc_dry_run.h"
 #include "arc_geometry.h"
 #include "arc_prepare.h"
 #include "dda_circle.h"
@@ -183,59 +182,10 @@ TEST(ArcGeometry, LoadsMagnitudesGrowthCountsAndModulus) {
   EXPECT_EQ(g.k, 9u);  // 500 < 512
 }
 
-// The bit-serial dry run (rtl/arc_dry_run.sv's twin) of a good arc, from its start edge:
-// it marks as many iterations as the player's circle DDA makes on the same arc, and is done
-// after clocks(w, N, k) = 2WN + k edges.
-void expect_dry_run_counts_the_dda(const QuadrantArc& a, unsigned w) {
-  const ArcGeometry g = arc_geometry(a.words(), w);
-  CircleDda dda;
-  dda.load(g, true, true);
-  uint64_t n = 0;
-  for (; !dda.done() && n < (uint64_t{1} << 22); ++n) dda.iterate();
-  ArcDryRun dry(w);
-  dry.start(g);
-  uint64_t edges = 0, marked = 0;
-  while (!dry.done() && edges <= ArcDryRun::clocks(w, n, g.k)) {
-    marked += dry.step(g);
-    ++edges;
-  }
-  ASSERT_EQ(marked, n) << "W " << w << " " << a.describe();
-  ASSERT_EQ(edges, ArcDryRun::clocks(w, n, g.k)) << "W " << w << " " << a.describe();
-}
-
-TEST(ArcDryRun, SerialIterationCountEqualsTheDdaOnEveryFourBitArc) {
-  const unsigned w = 4;
-  int arcs = 0;
-  for (int64_t x0 = -15; x0 <= 15; ++x0)
-    for (int64_t y0 = -15; y0 <= 15; ++y0)
-      for (int64_t x1 = -15; x1 <= 15; ++x1)
-        for (int64_t y1 = -15; y1 <= 15; ++y1)
-          for (bool ccw : {false, true}) {
-            const QuadrantArc a = arc(x0, y0, x1, y1, ccw);
-            if (check_arc(a.words(), w) != TapeError::kNone) continue;
-            expect_dry_run_counts_the_dda(a, w);
-            if (HasFatalFailure()) return;
-            ++arcs;
-          }
-  EXPECT_GT(arcs, 2000);
-}
-
-TEST(ArcDryRun, SerialIterationCountEqualsTheDdaAtWideRegisters) {
-  std::mt19937_64 rng(23);
-  for (unsigned w : {16u, 24u, 31u}) {
-    for (int t = 0; t < 40; ++t) {
-      // Radii from a few BLU to 2^13 (k up to 14 in passes of W clocks: bits k .. W - 1
-      // stay 0); larger radii only make the loop longer.
-      const int64_t top = int64_t{1} << (2 + rng() % 12);
-      expect_dry_run_counts_the_dda(circle_study::random_arc(rng, top - 1), w);
-      if (HasFatalFailure()) return;
-    }
-  }
-}
-
 // The decoder's arc preparation: same verdict as check_arc(), N marked iterations (the
 // decoder's S = F * N) with N the golden DDA's iteration count, and done in the clock after
-// max(N, (5W + 4)(2W + 4)) run edges, max(2WN + k, ...) with the serial dry run.
+// max(N, (5W + 4)(2W + 4)) run edges, max(2PN, ...) with the serial dry run (P = W rounded
+// up to a power of two).
 void expect_prepare(const QuadrantArc& a, unsigned w, bool serial) {
   ArcPrepare prep(w, serial);
   const ArcWords words = a.words();
@@ -258,8 +208,10 @@ void expect_prepare(const QuadrantArc& a, unsigned w, bool serial) {
   const uint64_t check_steps = ArcRadiusCheck::clocks(w);  // (5W + 4)(2W + 4)
   if (want == TapeError::kNone) {
     EXPECT_EQ(iterations, run.iterations) << a.describe();
-    EXPECT_EQ(calls, 1 + ArcPrepare::clocks(w, serial, run.iterations, g.k)) << a.describe();
-    const uint64_t dry = serial ? 2 * w * run.iterations + g.k : run.iterations;
+    EXPECT_EQ(calls, 1 + ArcPrepare::clocks(w, serial, run.iterations)) << a.describe();
+    uint64_t pass = 1;
+    while (pass < w) pass *= 2;
+    const uint64_t dry = serial ? 2 * pass * run.iterations : run.iterations;
     EXPECT_EQ(calls, 2 + std::max(dry, check_steps)) << a.describe();
   } else {
     EXPECT_EQ(calls, 2 + check_steps) << a.describe();  // the dry run is cut short
