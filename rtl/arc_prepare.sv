@@ -9,12 +9,13 @@
 // generator plays the N iterations in M / F clocks, as it plays the 2^k iterations of a
 // line (docs/circle-dda.md section 4). A failed radius check stops the dry run.
 // The dry run is a second dda_circle, one iteration per clock (BitSerial = 0), or the
-// bit-serial arc_dry_run.sv, 2W clocks per iteration for about 150 logic cells fewer (1): the
-// trade of docs/interpolator.md 3.5. The golden twin is sc_model/golden/arc_prepare.cpp.
+// bit-serial dda_serial.sv, 2P clocks per iteration (P = W rounded up to a power of two) for
+// about 150 logic cells fewer: the trade of docs/interpolator.md 3.5. The golden twin is
+// sc_model/golden/arc_prepare.cpp.
 // Timing: the first clock with run_i is the start edge: a geometric error makes done_o
 // high in that clock; otherwise the dry run and the check run from the next edges and
 // done_o rises in the clock after the later of the two: max(N, C) clocks after the start
-// edge, max(2WN + k, C) with BitSerial. done_o, the error and iterate_o are
+// edge, max(2PN, C) with BitSerial. done_o, the error and iterate_o are
 // combinational from registers (and the held block); the decoder acts on them at that edge.
 module arc_prepare #(
   parameter int IncWidth  = 16,

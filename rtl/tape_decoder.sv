@@ -20,7 +20,7 @@
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
 // a motion block puts the decoder in PREPARE: a line for k + 1 clocks (S = F at the LF,
 // doubled at the next k edges, HOLD at the one after), an arc until arc_prepare is done
-// (max(N, C) clocks, or max(2WN + k, C) with BitSerial; C = (5W + 4)(2W + 4) for the
+// (max(N, C) clocks, or max(2PN, C) with BitSerial; C = (5W + 4)(2W + 4) for the
 // radius check), then HOLD or ERROR; the block buffer takes a held block at the first edge
 // where it is empty (blk_ready_i). With BitSerial a digit processed at edge e holds the next
 // frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the word's limit is

@@ -2,13 +2,13 @@
 # Gap clocks of the two arc dry runs against the feed: writes a contour's tape with arc
 # blocks at each feed, plays it on the golden model with the parallel dry run (one
 # iteration per clock) and with the board's bit-serial one (`ncinterp check
-# --bit-serial`, 2W clocks per iteration) at each clock frequency, and prints the
+# --bit-serial`, 2P clocks per iteration, P = W rounded up to a power of two) at each clock frequency, and prints the
 # clocks in which the player waited for a block.
 # Usage: dry_run_gaps.sh NCINTERP CONTOUR "FEEDS (mm/min)" "CLOCKS (Hz)" [READER_CPS]
 #   e.g. bench/sim/dry_run_gaps.sh build/ncinterp examples/contours/circle_r50.json \
 #        "500 1000 2000 5000 10000" "1000000 12000000"
 # Idea: an arc is ready when it has been read and prepared; the serial dry run prepares
-# it in 2WN + k clocks instead of N, so it leaves gaps once the block ahead plays in fewer
+# it in 2PN clocks instead of N, so it leaves gaps once the block ahead plays in fewer
 # clocks than that, i.e. above a feed that grows with the clock (docs/interpolator.md 3.5).
 set -euo pipefail
 ncinterp=$1 contour=$2 feeds=$3 clocks=$4 cps=${5:-1000}

@@ -3,7 +3,7 @@
 # and golden model, `ncinterp cosim`) at each reader speed and prints the clocks in which
 # the player waited for a block (busy low between blocks), which must be 0 for the
 # machine to keep its programmed feed. With --bit-serial first, the tapes play as on
-# the board (interp_top's BitSerial: the arc's dry run and the digits bit-serial) on the golden model
+# the board (interp_top's BitSerial: the DDA and the digits bit-serial) on the golden model
 # (`ncinterp check --bit-serial`; the lock step of that RTL is the rtl_variant test's).
 # Usage: reader_gaps.sh [--bit-serial] [--clock-hz HZ] NCINTERP "CPS..." TAPE...
 #   e.g. bench/sim/reader_gaps.sh build/ncinterp "1000 500 200 100" examples/*.nc

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", a.seconds, "machine time of each contour (sets the feed)")->capture_default_str();
   app.add_option("--dump", a.dump, "directory for failing cases (input, tape, report, commands)");
   app.add_flag("--bit-serial", a.bit_serial,
-               "play as the board does: the arc's dry run and the digits bit-serial (golden engine only)");
+               "play as the board does: the DDA (player and dry run) and the digits bit-serial (golden engine only)");
   app.add_flag("--no-arcs", a.no_arcs, "never cut arcs as G02/G03 blocks (--arcs circle); by default half the contours with arcs are");
   CLI11_PARSE(app, argc, argv);
   if (a.bit_serial && a.engine != "golden") {

@@ -26,11 +26,11 @@ module board_core #(
   // to leave room for the interpolator on the part (12 MHz: >= 2930 baud, <= 21 us).
   parameter int DivWidth      = 12,
   parameter int StretchWidth  = 8,
-  // The decoder's per-block arithmetic bit-serial (interp_top's BitSerial): fewer logic
-  // cells; the dry run keeps up with arcs of up to one iteration per 2W clocks (375 000 per
-  // second at 12 MHz and W = 16), above what the step stretchers let through on most arcs
-  // (docs/interpolator.md 3.5), and a digit's pass (NumWidth clocks) is hidden between
-  // the UART's frames.
+  // The arithmetic bit-serial (interp_top's BitSerial): fewer logic cells; the DDA of the
+  // player and of the arc's dry run takes 2P clocks per iteration (375 000 iterations per
+  // second at 12 MHz and W = 16), above what the step stretchers let through on most
+  // blocks (docs/interpolator.md 3.5 and 5.5), and a digit's pass (NumWidth clocks) is
+  // hidden between the UART's frames.
   parameter bit BitSerial  = 1'b1
 ) (
   input  logic        clk_i,

@@ -84,7 +84,7 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
                                  : 0.0;
     if (!b.is_arc()) {
       const LineSchedule s(std::llabs(b.tape.dx), std::llabs(b.tape.dy), b.tape.feed,
-                           options_.feed_modulus);
+                           options_.feed_modulus, options_.lead_bits);
       r.saturated = s.saturated();
     }
   }
@@ -162,7 +162,8 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
       if (o.feed_saturated != schedule_.saturated())
         report(Rule::kDuration, cycle,
                std::string("feed_saturated_o = ") + (o.feed_saturated ? "1" : "0") +
-                   ", documented " + (schedule_.saturated() ? "1 (F << k >= M)" : "0 (F << k < M)"));
+                   ", documented " +
+                   (schedule_.saturated() ? "1 (F << (k + lead) >= M)" : "0 (F << (k + lead) < M)"));
     }
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
@@ -190,7 +191,9 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
   iterations_ = 0;
   if (!b.is_arc())
     schedule_ = LineSchedule(std::llabs(b.tape.dx), std::llabs(b.tape.dy), b.tape.feed,
-                             options_.feed_modulus);
+                             options_.feed_modulus, options_.lead_bits);
+  else
+    r.saturated = o.feed_saturated;  // S = F N needs the dry run's N: the engine's word
   if (o.block_n != b.tape.n)
     report(Rule::kSequence, cycle,
            "block_n_o = " + std::to_string(o.block_n) + " at the load of tape block " +

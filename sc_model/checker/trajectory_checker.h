@@ -100,6 +100,7 @@ struct PulseSample {
 struct CheckerOptions {
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;  // M = 60 f_clk 10^FeedFracDigits
   bool schedule = true;        // the schedule and duration rules for line blocks
+  unsigned lead_bits = 0;      // log2 of the DDA's clocks per iteration (line_schedule.h)
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_bound_blu + |R1 - R0| (docs/circle-dda.md 3.2: 0.88 BLU,
   // measured on every good arc up to W = 7 and 100000 random arcs at W = 16).

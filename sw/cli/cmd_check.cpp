@@ -127,9 +127,9 @@ CommandRegistration registration("check", [](CLI::App& app) {
       ->check(CLI::IsMember({"golden", "rtl"}))
       ->capture_default_str();
   cmd->add_flag("--bit-serial", args->bit_serial,
-                "play as the board's RTL does: the per-block arithmetic bit-serial (an arc's dry run "
-                "2W clocks per iteration, a digit's x10 + d a pass of its number width; interp_top's "
-                "BitSerial; golden engine)");
+                "play as the board's RTL does: the arithmetic bit-serial (the DDA of the player and "
+                "of an arc's dry run 2P clocks per iteration, P = W rounded up to a power of two; a "
+                "digit's x10 + d a pass of its number width; interp_top's BitSerial; golden engine)");
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();

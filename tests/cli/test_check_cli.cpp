@@ -128,9 +128,9 @@ TEST_F(CheckCli, BadSvgPathFailsBeforeTheRunAndLeavesNoReport) {
   EXPECT_EQ(files(), std::vector<std::string>{"circle.tape"});
 }
 
-// The bundled arc tape as the board plays it (the bit-serial dry run): the same path, a
-// longer run (each arc is prepared in 2WN + k clocks instead of N, and the first one has no
-// block ahead to hide it); the verilated RTL of this build cannot play it so.
+// The bundled arc tape as the board plays it (the bit-serial DDA): the same path, a longer
+// run (each arc is prepared in 2PN clocks instead of N, and the first one has no block ahead
+// to hide it); the verilated RTL of this build cannot play it so.
 TEST_F(CheckCli, BitSerialPlaysTheSamePathInMoreClocks) {
   const std::string tape = std::string(NCINTERP_EXAMPLES_DIR) + "/circle_r50.nc";
   ASSERT_EQ(run("check " + tape + " --report " + path("parallel.json")), 0) << stderr_;

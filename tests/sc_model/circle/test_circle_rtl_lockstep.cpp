@@ -211,7 +211,7 @@ TEST(CircleRtlLockstep, ArcPrepareEqualsGoldenEveryClockAtW6) {
   arc_prepare_lockstep_w6<Varc_prepare_w6>(false);
 }
 
-// The bit-serial dry run (BitSerial): radii up to 2^12 keep the runs short (2WN clocks).
+// The bit-serial dry run (BitSerial): radii up to 2^12 keep the runs short (2PN clocks).
 TEST(CircleRtlLockstep, BitSerialArcPrepareEqualsGoldenEveryClockAtW16) {
   arc_prepare_lockstep_w16<Varc_prepare_serial>(true, 4095);
 }

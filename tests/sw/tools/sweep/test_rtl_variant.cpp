@@ -48,9 +48,9 @@ TEST_F(RtlVariantHeavy, BuildsAtW8AndMatchesTheGoldenModelOnEveryClock) {
   EXPECT_EQ(r.summary, "match on 1 tapes, " + std::to_string(in.cycles) + " clocks");
 }
 
-// The serial dry run (interp_top's BitSerial) on the 50 mm circle programmed as arcs at
-// W = 16, in lock step with the golden model configured alike. Its arcs (N about 10^5)
-// take 2WN clocks to prepare: the run is longer than the parallel dry run's, which shows
+// The bit-serial player and dry run (interp_top's BitSerial) on the 50 mm circle programmed
+// as arcs at W = 16, in lock step with the golden model configured alike. Its arcs (N about
+// 10^5) take 2PN clocks to prepare: the run is longer than the parallel one's, which shows
 // that the variant is the serial one.
 TEST_F(RtlVariantHeavy, BitSerialMatchesTheGoldenModelOnEveryClock) {
   const std::string tape = path("circle_arcs_w16.tape");
