@@ -34,9 +34,11 @@ module feed_generator #(
   output logic                    saturated_o
 );
 
-  // Only a block that is not saturated uses the phase, and then S << LeadBits < M: S, the
-  // phase (< M) and phase + S (< 2M) need ModulusWidth (+ 1) bits whatever StepWidth is.
+  // Only a block that is not saturated uses the phase, and then S << LeadBits < M: S needs
+  // ModulusWidth - LeadBits bits, the phase (< M) and phase + S (< 2M) ModulusWidth (+ 1),
+  // whatever StepWidth is.
   localparam int PhaseWidth = ModulusWidth + 1;
+  localparam int RunStepWidth = ModulusWidth - LeadBits;
   localparam int CmpWidth   = StepWidth + LeadBits > ModulusWidth ? StepWidth + LeadBits
                                                                   : ModulusWidth;
 
@@ -48,9 +50,10 @@ module feed_generator #(
   // constant, and the compares with M fold.
   logic [ModulusWidth-1:0] modulus_q;
   // step_q: S of the playing block (its low bits: all of it when not saturated).
-  // phase_q: accumulated feed, always < M when not saturated. saturated_q: S >= M, one
-  // iteration per clock.
-  logic [PhaseWidth-1:0] step_q, step_d, phase_q, phase_d;
+  // phase_q: accumulated feed, always < M when not saturated. saturated_q: S << LeadBits
+  // >= M, one iteration per clock.
+  logic [RunStepWidth-1:0] step_q, step_d;
+  logic [PhaseWidth-1:0] phase_q, phase_d;
   logic                  saturated_q, saturated_d;
 
   logic [PhaseWidth-1:0] sum, modulus, over;
@@ -69,7 +72,7 @@ module feed_generator #(
     phase_d     = phase_q;
     saturated_d = saturated_q;
     if (load_i) begin
-      step_d      = PhaseWidth'(step_i);
+      step_d      = RunStepWidth'(step_i);
       phase_d     = PhaseWidth'(lead_step);
       saturated_d = lead_step >= CmpWidth'(modulus_q);
     end else if (run_i) begin
@@ -77,7 +80,7 @@ module feed_generator #(
         strobe_o = 1'b1;
       end else begin
         // One subtraction gives both the compare (no borrow: sum >= M) and sum - M.
-        sum            = phase_q + step_q;
+        sum            = phase_q + PhaseWidth'(step_q);
         {borrow, over} = {1'b0, sum} - {1'b0, modulus};
         reached        = !borrow;
         strobe_o = reached;

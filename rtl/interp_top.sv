@@ -67,8 +67,15 @@ module interp_top #(
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
-  // The feed step S = F * N of a block (N <= 2^(W+1) iterations).
-  localparam int StepWidth = FeedWidth + IncWidth + 1;
+  // The DDA's clocks per iteration are 2^LeadBits: 1 (dda_circle), or 2P with BitSerial
+  // (dda_serial.sv; P = 2^$clog2(IncWidth)).
+  localparam int LeadBits = BitSerial ? $clog2(IncWidth) + 1 : 0;
+  // The feed step S = F * N of a block (N <= 2^(W+1) iterations), as wide as its job: any S
+  // with S << LeadBits >= M saturates the block whatever its value (feed_generator.sv), so
+  // S saturates at all ones in ModulusWidth - LeadBits + 1 bits (the decoder's).
+  localparam int ExactStepWidth = FeedWidth + IncWidth + 1;
+  localparam int StepWidth = ExactStepWidth < ModulusWidth - LeadBits + 1 ? ExactStepWidth
+                                                                          : ModulusWidth - LeadBits + 1;
   // A decoded block as the buffer stores it: N, motion, dx, dy (sign + magnitude), |i|, |j|
   // (the arc's start about its centre), S, k, and for an arc the growth of |x| and |y|.
   // The codes are interp_pkg's; the struct is declared here because its widths are this
@@ -135,7 +142,7 @@ module interp_top #(
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
-    .BitSerial(BitSerial)
+    .StepWidth(StepWidth), .BitSerial(BitSerial)
   ) u_decoder (
     .clk_i, .rst_ni,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
@@ -187,9 +194,6 @@ module interp_top #(
 
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || finished);
-
-  // The serial DDA's iteration takes 2^LeadBits = 2P clocks (dda_serial.sv).
-  localparam int LeadBits = BitSerial ? $clog2(IncWidth) + 1 : 0;
 
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits))
   u_feed (

@@ -39,6 +39,9 @@ module tape_decoder #(
   parameter int SeqWidth       = 20,
   // Frame offset counter width (error reports).
   parameter int OffsetWidth    = 32,
+  // The feed step S: exact below 2^StepWidth - 1, saturating there (interp_top.sv: any S
+  // that large saturates the block).
+  parameter int StepWidth      = FeedWidth + IncWidth + 1,
   // The per-block arithmetic in parallel (0) or bit-serial (1, the board's choice): the
   // arc's dry run (arc_prepare.sv) and each digit's x10 + d (tape_word_parser.sv).
   parameter bit BitSerial      = 1'b0
@@ -62,7 +65,7 @@ module tape_decoder #(
   output logic [IncWidth-1:0]    blk_i_o,
   output logic [IncWidth-1:0]    blk_j_o,
   // The feed generator's step S: F << k for a line, F * N for an arc (N < 2^(W+1)).
-  output logic [FeedWidth+IncWidth:0]   blk_step_o,
+  output logic [StepWidth-1:0]   blk_step_o,
   // k of the block: the line DDA's (bit length of max(|dx|, |dy|)) or the circle DDA's (of
   // the largest coordinate about the centre); for an arc, whether |x|, |y| grow.
   output logic [$clog2(IncWidth+1)-1:0] blk_k_o,
@@ -80,7 +83,6 @@ module tape_decoder #(
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
-  localparam int StepWidth = FeedWidth + IncWidth + 1;
   // The word parser's value width: the widest register a word fills.
   localparam int NumWidth0 = IncWidth > FeedWidth ? IncWidth : FeedWidth;
   localparam int NumWidth1 = NumWidth0 > SeqWidth ? NumWidth0 : SeqWidth;
@@ -128,8 +130,16 @@ module tape_decoder #(
   // ready. So the player has nothing to compute at the load.
   logic [KWidth-1:0]    k_q, k_d;
   // step_q: the block's feed step S, summed in PREPARE (serially: one shift or one add of F
-  // per clock, no multiplier or barrel shifter). shifts_q: a line's doublings still to do.
+  // per clock, no multiplier or barrel shifter), saturating at all ones (StepWidth).
+  // shifts_q: a line's doublings still to do.
   logic [StepWidth-1:0] step_q, step_d;
+  logic                 step_carry;
+  logic [StepWidth-1:0] step_sum;
+
+  // F as a step: itself, or all ones if it does not fit (then any block saturates).
+  function automatic logic [StepWidth-1:0] feed_step(input logic [FeedWidth-1:0] feed);
+    feed_step = ((FeedWidth + StepWidth)'(feed) >> StepWidth) != '0 ? '1 : StepWidth'(feed);
+  endfunction
   logic [KWidth-1:0]    shifts_q, shifts_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
@@ -207,7 +217,7 @@ module tape_decoder #(
     {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok,
-     clear_block} = 'x;
+     clear_block, step_carry, step_sum} = 'x;
     if (update) begin
       state_d       = state_q;
       n_d           = n_q;
@@ -325,7 +335,7 @@ module tape_decoder #(
                         state_d  = StPrepare;
                         k_d      = bit_length(dx_d | dy_d);
                         shifts_d = k_d;
-                        step_d   = motion_d == interp_pkg::MotionLine ? StepWidth'(feed_d) : '0;
+                        step_d   = motion_d == interp_pkg::MotionLine ? feed_step(feed_d) : '0;
                       end
                     end else begin
                       if (end_blk_d) state_d = StEnd;
@@ -355,17 +365,17 @@ module tape_decoder #(
           fail_offset = offset - 1'b1;  // the digit, the last frame processed
         end
       end else if (preparing && !in_arc) begin
-        // A line: S = F << k, one doubling per clock (S < 2^StepWidth: F < 2^FeedWidth,
-        // k <= W).
+        // A line: S = F << k, one doubling per clock, saturating.
         if (shifts_q == '0) begin
           state_d = StHold;
         end else begin
-          step_d   = step_q << 1;
+          step_d   = step_q[StepWidth-1] ? '1 : step_q << 1;
           shifts_d = shifts_q - 1'b1;
         end
       end else if (in_arc) begin
-        // An arc: F once per dry-run iteration, S = F * N (< 2^StepWidth: N < 2^(W+1)).
-        if (arc_iterate) step_d = step_q + StepWidth'(feed_q);
+        // An arc: F once per dry-run iteration, S = F * N, saturating.
+        {step_carry, step_sum} = {1'b0, step_q} + {1'b0, feed_step(feed_q)};
+        if (arc_iterate) step_d = step_carry ? '1 : step_sum;
         if (arc_done) begin
           if (arc_err) begin
             fail = 1'b1;

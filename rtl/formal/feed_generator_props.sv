@@ -1,13 +1,15 @@
 // Formal harness of the feed generator (rtl/feed_generator.sv), docs/interpolator.md 5.2.
 //
-// What is proven, for every block of N iterations with feed F (S = F N) and modulus M:
-// - ap_timing: the j-th iteration strobe acts at edge L + ceil(j M / S) - 1 after the load
-//   edge L (one strobe per clock at most, none lost: the phase never needs two), and at
-//   L + j when saturated (S >= M);
-// - ap_block: so the last one (j = N) acts at L + ceil(M / F) - 1: the block takes ceil(M/F)
-//   clocks, N + 1 when saturated;
+// What is proven, for every block of N iterations with feed F (S = F N), modulus M and the
+// DDA's lead LB (2^LB clocks per iteration, feed_generator.sv's LeadBits):
+// - ap_timing: the j-th iteration strobe acts at edge L + ceil(j M / S) - 2^LB after the
+//   load edge L (one strobe per clock at most, none lost: the phase never needs two), so
+//   its iteration ends at L + ceil(j M / S) - 1; and at L + j when saturated
+//   (S << LB >= M: then a strobe every clock, which the serial DDA takes when idle);
+// - ap_block: so the last one (j = N) ends at L + ceil(M / F) - 1: the block takes ceil(M/F)
+//   clocks;
 // - ap_run: no strobe unless the block has iterations left; ap_saturated: feed_saturated is
-//   S >= M for the whole block.
+//   S << LB >= M for the whole block.
 // Environment (what interp_top guarantees): reset in the first clock, feed_modulus_i static
 // (M >= 1), the first load two edges after reset at the earliest (modulus_q is valid), a
 // load only when the playing block has no iterations left. The harness plays the DDA: it
@@ -18,7 +20,8 @@
 module feed_generator_props #(
   parameter int FW = 3,   // F width
   parameter int NW = 3,   // N width
-  parameter int MW = 5    // modulus width
+  parameter int MW = 5,   // modulus width
+  parameter int LB = 0    // LeadBits
 ) (
   input logic          clk_i,
   input logic          rst_ni,
@@ -37,7 +40,7 @@ module feed_generator_props #(
   logic [SW-1:0] step;
   assign step = SW'(feed_i) * SW'(count_i);
 
-  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(MW)) u_dut (
+  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(MW), .LeadBits(LB)) u_dut (
     .clk_i, .rst_ni, .load_i, .step_i(StepWidth'(step)), .run_i(run), .modulus_i,
     .strobe_o(strobe), .saturated_o(saturated)
   );
@@ -56,7 +59,7 @@ module feed_generator_props #(
   logic          f_sat;
 
   assign run   = f_left_q != '0;
-  assign f_sat = (SW + MW)'(f_s_q) >= (SW + MW)'(f_m_q);
+  assign f_sat = (SW + MW + LB)'(f_s_q) << LB >= (SW + MW + LB)'(f_m_q);
 
   always_ff @(posedge clk_i) begin
     f_init <= 1'b0;
@@ -86,9 +89,11 @@ module feed_generator_props #(
     if (load_i) assume (f_age_q >= 2'd2 && !run && feed_i != '0 && count_i != '0);
   end
 
-  // The strobe seen in this clock is the j-th (j = f_j_q + 1) and acts at edge L + f_t_q.
-  logic [PW-1:0] f_t, f_j, f_s, f_m, f_f;
+  // The strobe seen in this clock is the j-th (j = f_j_q + 1) and acts at edge L + f_t_q;
+  // f_u = f_t_q + 2^LB - 1: its iteration ends at edge L + f_u.
+  logic [PW-1:0] f_t, f_u, f_j, f_s, f_m, f_f;
   assign f_t = PW'(f_t_q);
+  assign f_u = f_t + PW'((1 << LB) - 1);
   assign f_j = PW'(f_j_q) + 1'b1;
   assign f_s = PW'(f_s_q);
   assign f_m = PW'(f_m_q);
@@ -102,11 +107,11 @@ module feed_generator_props #(
         if (f_sat) begin
           ap_timing_saturated: assert (f_t == f_j);
         end else begin
-          ap_timing: assert (f_t * f_s < f_j * f_m && f_j * f_m <= (f_t + 1'b1) * f_s);
+          ap_timing: assert (f_u * f_s < f_j * f_m && f_j * f_m <= (f_u + 1'b1) * f_s);
         end
         if (f_left_q == NW'(1)) begin
           if (f_sat) ap_block_saturated: assert (f_t == PW'(f_n_q));
-          else ap_block: assert (f_t * f_f < f_m && f_m <= (f_t + 1'b1) * f_f);
+          else ap_block: assert (f_u * f_f < f_m && f_m <= (f_u + 1'b1) * f_f);
         end
       end
     end
@@ -117,7 +122,8 @@ module feed_generator_props #(
   // formal-tap: tap_step = u_dut.step_q
   // formal-tap: tap_sat = u_dut.saturated_q
   // formal-tap: tap_modulus = u_dut.modulus_q
-  logic [MW:0]        tap_phase, tap_step;  // PhaseWidth = MW + 1 (S < M when it is used)
+  logic [MW:0]        tap_phase;  // PhaseWidth = MW + 1
+  logic [MW-LB-1:0]   tap_step;   // S << LB < M when it is used
   logic               tap_sat;
   logic [MW-1:0]      tap_modulus;
 
@@ -130,13 +136,13 @@ module feed_generator_props #(
       if (f_age_q >= 2'd2) ai_modulus: assert (tap_modulus == f_m_q);
       if (!f_blk_q) ai_idle: assert (!run);
       if (f_blk_q) begin
-        ai_block: assert (tap_step == (MW + 1)'(f_s_q) && tap_sat == f_sat
+        ai_block: assert (tap_step == (MW - LB)'(f_s_q) && tap_sat == f_sat
                           && f_s_q == SW'(f_f_q) * SW'(f_n_q) && f_f_q != '0
                           && (NW + 1)'(f_left_q) + (NW + 1)'(f_j_q) == (NW + 1)'(f_n_q)
                           && f_m_q != '0 && f_age_q >= 2'd2);
         if (run && f_sat) ai_clocks_saturated: assert (f_t == f_done + 1'b1);
         if (run && !f_sat) begin
-          ai_phase: assert (PW'(tap_phase) + f_done * f_m == f_t * f_s);
+          ai_phase: assert (PW'(tap_phase) + f_done * f_m == f_u * f_s);
           ai_phase_below_m: assert (PW'(tap_phase) < f_m);
         end
       end

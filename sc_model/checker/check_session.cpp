@@ -97,7 +97,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   CheckerOptions co;
   co.feed_modulus = cfg.feed_modulus;
   co.schedule = setup.schedule;
-  co.lead_bits = cfg.bit_serial ? SerialDda::lead_bits(cfg.inc_width) : 0;
+  co.lead_bits = SerialDda::player_lead_bits(cfg);
   co.arc_bound_blu = setup.arc_bound_blu;
   co.tol_blu = out.tol_blu;
   co.keep_pulses = setup.keep_pulses;

@@ -16,6 +16,7 @@
 
 #include "arc_geometry.h"
 #include "dda_circle.h"
+#include "interp_ports.h"
 
 namespace ncinterp {
 
@@ -36,6 +37,10 @@ class SerialDda {
     unsigned bits = 1;  // 2P = 2^bits
     while ((1u << bits) < 2 * inc_width) ++bits;
     return bits;
+  }
+  // The player's DDA's lead: SerialDda's with BitSerial, 0 for CircleDda (one clock).
+  static unsigned player_lead_bits(const InterpConfig& cfg) {
+    return cfg.bit_serial ? lead_bits(cfg.inc_width) : 0;
   }
 
   // A load edge of an arc / a line (as CircleDda::load, load_line).

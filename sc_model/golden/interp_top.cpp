@@ -22,9 +22,7 @@ void require(bool ok, const char* what) {
 GoldenInterp::GoldenInterp(const InterpConfig& cfg)
     : cfg_(cfg), decoder_(cfg), serial_(cfg.inc_width) {
   // The phase sum is formed only when not saturated (S < M < 2^62), so it cannot overflow.
-  // |dx|, |dy| are held in 32 bits; a line's S = F << k (FeedWidth + IncWidth bits) in 64.
-  // An arc's S = F * N may need one bit more: ArcPrepare keeps it exact below 2^63 and
-  // clamps it there, which only matters as "saturated" (S >= M, and M < 2^62).
+  // |dx|, |dy| are held in 32 bits; S saturates below 2^63 (GoldenTapeDecoder::step_max()).
   require(cfg.inc_width >= 1 && cfg.inc_width <= 32, "inc_width must be 1..32");
   require(cfg.feed_width >= 1 && cfg.feed_width + cfg.inc_width <= 64,
           "feed_width + inc_width must be <= 64");
@@ -34,7 +32,7 @@ GoldenInterp::GoldenInterp(const InterpConfig& cfg)
   require(cfg.offset_width >= 1 && cfg.offset_width <= 32, "offset_width must be 1..32");
   require(cfg.frac_digits <= 9 && cfg.feed_frac_digits <= 9, "fraction digits must be <= 9");
   modulus_ = cfg.feed_modulus & low_mask(cfg.modulus_width);
-  lead_bits_ = cfg.bit_serial ? SerialDda::lead_bits(cfg.inc_width) : 0;
+  lead_bits_ = SerialDda::player_lead_bits(cfg);
   saturation_step_ = (modulus_ + (uint64_t{1} << lead_bits_) - 1) >> lead_bits_;
   pos_mask_ = low_mask(cfg.pos_width);
   pos_sign_ = 1ull << (cfg.pos_width - 1);

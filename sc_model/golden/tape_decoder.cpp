@@ -11,11 +11,6 @@ namespace {
 
 uint64_t low_mask(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
 
-// An arc's S = F * N is clamped at 2^63: the RTL's step register is FeedWidth + W + 1 bits
-// wide and never wraps, and a step that large saturates any feed modulus (M < 2^62), so the
-// clamp is never observable.
-constexpr uint64_t kStepClamp = uint64_t{1} << 63;
-
 bool odd_parity(uint8_t frame) { return __builtin_parity(frame) != 0; }
 
 }  // namespace
@@ -29,7 +24,14 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
       feed_limit_(low_mask(cfg.feed_width)),
       seq_limit_(low_mask(cfg.seq_width)),
       offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
+      step_max_(step_max(cfg)),
       arc_(cfg.inc_width, cfg.bit_serial) {}
+
+uint64_t GoldenTapeDecoder::step_max(const InterpConfig& cfg) {
+  const unsigned exact = cfg.feed_width + cfg.inc_width + 1;
+  const unsigned job = cfg.modulus_width - SerialDda::player_lead_bits(cfg) + 1;
+  return low_mask(std::min(exact, job));
+}
 
 void GoldenTapeDecoder::reset() {
   state_ = State::kLeader;
@@ -277,7 +279,7 @@ void GoldenTapeDecoder::end_of_block(uint32_t offset) {
     // doubled k times (k = bit length of max(|dx|, |dy|)), and at 0 for an arc.
     const uint32_t d = block_.dx | block_.dy;
     shifts_ = d == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(d));
-    block_.step = block_.is_arc() ? 0 : block_.feed;
+    block_.step = block_.is_arc() ? 0 : std::min(block_.feed, step_max_);
     state_ = State::kPrepare;
     return;
   }
@@ -290,14 +292,14 @@ void GoldenTapeDecoder::prepare_edge() {
     if (shifts_ == 0) {
       state_ = State::kHold;
     } else {
-      block_.step <<= 1;
+      block_.step = block_.step > step_max_ >> 1 ? step_max_ : block_.step << 1;
       --shifts_;
     }
     return;
   }
   const ArcPrepare::Result r = arc_.edge(block_.arc_words());
   if (r.iterate)  // F once per dry-run iteration: S = F * N
-    block_.step = block_.step + block_.feed < kStepClamp ? block_.step + block_.feed : kStepClamp;
+    block_.step = std::min(block_.step + std::min(block_.feed, step_max_), step_max_);
   if (!r.done) return;
   if (r.error != TapeError::kNone) {
     fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read

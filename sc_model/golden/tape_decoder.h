@@ -24,7 +24,8 @@ struct DecodedBlock {
   bool dx_neg = false, dy_neg = false, i_neg = false, j_neg = false;
   uint64_t feed = 0;
   // The feed generator's step S = F * N (N iterations: 2^k for a line, the circle DDA's
-  // count for an arc); summed while the block is prepared, final when it is held.
+  // count for an arc); summed while the block is prepared, final when it is held; saturating
+  // at GoldenTapeDecoder::step_max() (a step that large saturates the block).
   uint64_t step = 0;
 
   bool is_arc() const { return motion != 1; }
@@ -55,6 +56,9 @@ class GoldenTapeDecoder {
   // (the caller copies block() into the buffer first).
   void edge(const InterpInputs& in, bool buffer_empty);
 
+  // S saturates at all ones in interp_top.sv's StepWidth = min(FeedWidth + W + 1,
+  // ModulusWidth - LeadBits + 1) bits: beyond M >> LeadBits every S saturates the block.
+  static uint64_t step_max(const InterpConfig& cfg);
   State state() const { return state_; }
   bool ready() const { return ready_; }
   bool tape_ended() const { return tape_end_q_; }
@@ -95,6 +99,7 @@ class GoldenTapeDecoder {
   unsigned frac_digits_, feed_frac_digits_;
   uint64_t inc_limit_, feed_limit_, seq_limit_;
   uint32_t offset_mask_;
+  uint64_t step_max_;  // all ones in the RTL's StepWidth bits
 
   // Block assembly: the decoder's state.
   State state_ = State::kLeader;

@@ -32,6 +32,7 @@ InterpConfig config(bool narrow, bool bit_serial) {
     c.feed_width = 8;
     c.seq_width = 7;
     c.offset_width = 12;
+    c.modulus_width = 12;  // S saturates at 2^13 - 1, bit-serial 2^9 - 1 (CMakeLists.txt)
   }
   c.bit_serial = bit_serial;
   return c;
@@ -141,6 +142,7 @@ template <typename Model>
 // How the tapes ended: a program decoded to its end, an error (by code).
 struct Outcomes {
   int ended = 0, held_blocks = 0;
+  int saturated_steps = 0;  // held blocks whose S saturated (GoldenTapeDecoder::step_max)
   int errors[16] = {0};
 };
 
@@ -174,7 +176,10 @@ template <typename Model>
       in.frame = offer ? frames[next] : 0;
       in.tape_end = next == frames.size();
       const bool free = rng() % 100 < free_percent;
-      if (free && g.state() == GoldenTapeDecoder::State::kHold) ++out.held_blocks;
+      if (free && g.state() == GoldenTapeDecoder::State::kHold) {
+        ++out.held_blocks;
+        out.saturated_steps += g.block().step == GoldenTapeDecoder::step_max(c);
+      }
       if (offer && m.frame_ready_o) ++next;
       m.frame_valid_i = in.frame_valid;
       m.frame_i = in.frame;
@@ -220,16 +225,19 @@ TEST(DecoderLockstep, BitSerialEqualsGoldenEveryClock) {
   expect_coverage(o);
 }
 
+// Narrow: the feed step S saturates too (at 2^13 - 1, bit-serial 2^9 - 1).
 TEST(DecoderLockstep, ParallelEqualsGoldenEveryClockAtNarrowWidths) {
   Outcomes o;
   EXPECT_TRUE(lockstep<Vtape_decoder_narrow>(config(true, false), 2000, 3, o));
   expect_coverage(o);
+  EXPECT_GT(o.saturated_steps, 50);
 }
 
 TEST(DecoderLockstep, BitSerialEqualsGoldenEveryClockAtNarrowWidths) {
   Outcomes o;
   EXPECT_TRUE(lockstep<Vtape_decoder_serial_narrow>(config(true, true), 2000, 4, o));
   expect_coverage(o);
+  EXPECT_GT(o.saturated_steps, 50);
 }
 
 }  // namespace
