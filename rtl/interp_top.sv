@@ -30,7 +30,7 @@ module interp_top #(
   // Width of feed_modulus_i.
   parameter int ModulusWidth   = 48,
   // The arithmetic: 0 = parallel; 1 = bit-serial, the board's choice (docs/interpolator.md
-  // 3.2, 3.5, 4 and 5.5): the DDA, of the player and of an arc's dry run, is dda_serial.sv,
+  // 3.2, 3.5, 4 and 5.6): the DDA, of the player and of an arc's dry run, is dda_serial.sv,
   // 2P clocks per iteration (P = W rounded up to a power of two) instead of one, each
   // digit's x10 + d a pass of NumWidth clocks on a one-bit adder (tape_word_parser.sv),
   // and the block buffer in block RAM, whose registered read makes a block loadable one

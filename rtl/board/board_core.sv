@@ -29,7 +29,7 @@ module board_core #(
   // The arithmetic bit-serial (interp_top's BitSerial): fewer logic cells; the DDA of the
   // player and of the arc's dry run takes 2P clocks per iteration (375 000 iterations per
   // second at 12 MHz and W = 16), above what the step stretchers let through on most
-  // blocks (docs/interpolator.md 3.5 and 5.5), and a digit's pass (NumWidth clocks) is
+  // blocks (docs/interpolator.md 3.5 and 5.6), and a digit's pass (NumWidth clocks) is
   // hidden between the UART's frames.
   parameter bit BitSerial  = 1'b1
 ) (

@@ -14,7 +14,7 @@ std::string point_text(GridPoint p) {
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
 }
 
-// L1 line DDA bound (docs/interpolator.md 5.5): (|dx| + |dy|) / (2 sqrt(dx^2 + dy^2)).
+// L1 line DDA bound (docs/interpolator.md 5.6): (|dx| + |dy|) / (2 sqrt(dx^2 + dy^2)).
 double line_bound(int64_t dx, int64_t dy) {
   const double ax = std::fabs(static_cast<double>(dx)), ay = std::fabs(static_cast<double>(dy));
   const double len = std::hypot(ax, ay);

@@ -6,7 +6,7 @@
 // the schedule. So this model computes the iteration at once with CircleDda, the same
 // integers as dda_circle.sv, and plays its outputs at the RTL's clocks; the lock step
 // compares the two every clock, which checks the RTL's bit-level arithmetic against an
-// independent model. The schedule (docs/interpolator.md 5.5): an iteration starts at an
+// independent model. The schedule (docs/interpolator.md 5.6): an iteration starts at an
 // edge with a strobe while idle and not done (clock 0 of its first pass); its pulses come
 // together at clock k - 1 (a line) or P + k - 1 (an arc, whose second axis is known only in
 // the second pass); the block's words are read until clock P - 1; the iteration ends at
@@ -82,6 +82,7 @@ class SerialDda {
   }
 
   bool done() const { return done_; }    // done_o
+  bool running() const { return run_; }  // an iteration's passes run
   bool words() const { return words_; }  // words_o: the block's words are still read
   bool dir(int axis) const { return dda_.dir(axis); }
   // The iteration's values (tests, the fault hook).

@@ -43,12 +43,14 @@ void GoldenInterp::reset() {
   decoder_.reset();
   next_ = DecodedBlock{};
   next_valid_ = false;
-  slot_ = shown_ = false;
+  next_taken_cycle_ = words_end_cycle_ = 0;
   feed_step_ = phase_ = 0;
   saturated_ = false;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
   serial_ = SerialDda(cfg_.inc_width);
+  player_done_ = true;
+  player_running_ = false;
   out_ = InterpOutputs{};
   out_.frame_ready = decoder_.ready();
   cycle_ = 0;
@@ -74,6 +76,8 @@ void GoldenInterp::load_block() {
     else
       circle_.load_line(k, b.dx, b.dy, !b.dx_neg, !b.dy_neg);
   }
+  player_done_ = cfg_.bit_serial ? serial_.done() : circle_.done();
+  player_running_ = false;
   dir_[0] = !b.dx_neg;
   dir_[1] = !b.dy_neg;
   // Feed generator: the phase starts lead_bits_ doublings of S ahead (only an unsaturated
@@ -94,7 +98,7 @@ void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {
   if (decoder_.state() == GoldenTapeDecoder::State::kHold && buffer_empty) {
     next_ = decoder_.block();  // the buffer takes the held block at this edge
     next_valid_ = true;
-    slot_ = !slot_;  // bit_serial: written to the other slot, which becomes the one shown
+    next_taken_cycle_ = cycle_;
   }
   decoder_.edge(in, buffer_empty);
   out_.frame_ready = decoder_.ready();

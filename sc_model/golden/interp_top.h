@@ -38,12 +38,7 @@ class GoldenInterp {
   void reset();
 
   // One rising clock edge with these inputs.
-  inline void tick(const InterpInputs& in) {
-    if (cfg_.bit_serial)
-      tick_bit_serial(in);
-    else
-      tick_parallel(in);
-  }
+  inline void tick(const InterpInputs& in);
 
   const InterpOutputs& outputs() const { return out_; }
   const InterpConfig& config() const { return cfg_; }
@@ -54,8 +49,7 @@ class GoldenInterp {
   void inject(const Fault& fault);
 
  private:
-  inline void tick_parallel(const InterpInputs& in);    // the player on CircleDda
-  inline void tick_bit_serial(const InterpInputs& in);  // the player on SerialDda
+  inline void player_edge(bool strobe);  // the player's DDA at an edge of a playing block
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
   void status_edge();                       // done / error when the player is empty
@@ -72,13 +66,19 @@ class GoldenInterp {
   uint64_t pos_mask_, pos_sign_;
 
   GoldenTapeDecoder decoder_;
-  // Block buffer ("next" register). With bit_serial it is a block RAM of two slots whose
-  // registered read shows one slot: the last one written (slot_), but the playing block's
-  // while the player still reads its words (SerialDda::words()); shown_ is the slot the
-  // read register holds, and a block can load only once it is shown (block_buffer.sv).
+  // Block buffer ("next" register). With bit_serial it is a block RAM whose registered read
+  // shows the last block taken, or the playing block's slot while the player reads that
+  // block's words (SerialDda::words()): a block is readable (next_readable()) when the
+  // player holds no words and the read register has had a clock to fetch it, after the
+  // take (next_taken_cycle_) and after the hold (words_end_cycle_). Cycle numbers, not
+  // flags cleared every tick: the hot path stores nothing for them.
   DecodedBlock next_;
   bool next_valid_ = false;
-  bool slot_ = false, shown_ = false;
+  uint64_t next_taken_cycle_ = 0, words_end_cycle_ = 0;
+  bool next_readable() const {
+    return !cfg_.bit_serial || (!serial_.words() && cycle_ != next_taken_cycle_ + 1 &&
+                                cycle_ != words_end_cycle_ + 1);
+  }
   // Player: feed generator and the DDA (lines and arcs). The feed generator's lead
   // (bit_serial: the serial DDA's iteration takes 2^lead_bits_ clocks): the phase starts
   // at S << lead_bits_, and a block is saturated from S >= saturation_step_ (S << lead_bits_
@@ -89,8 +89,12 @@ class GoldenInterp {
   uint64_t phase_ = 0;
   bool saturated_ = false;
   bool dir_[2] = {false, false};
-  CircleDda circle_;   // the player's DDA, or with bit_serial:
+  // The player's DDA: CircleDda, or with bit_serial SerialDda. player_done_ and
+  // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
+  // here so that a clock without an iteration reads two flags.
+  CircleDda circle_;
   SerialDda serial_;
+  bool player_done_ = true, player_running_ = false;
   CircleDda& player_dda() { return cfg_.bit_serial ? serial_.dda() : circle_; }
   // Outputs: the output registers themselves.
   InterpOutputs out_;
@@ -105,18 +109,18 @@ class GoldenInterp {
   uint64_t fault_block_ = 0;
 };
 
-inline void GoldenInterp::tick_parallel(const InterpInputs& in) {
+inline void GoldenInterp::tick(const InterpInputs& in) {
   ++cycle_;
   // Every decision below reads the registers as they were before this edge (the _q
   // values): they are taken first, then the player, the buffer and the decoder update.
   using State = GoldenTapeDecoder::State;
   const bool busy = out_.busy;
-  const bool finishing = busy && circle_.done();
+  const bool finishing = busy && player_done_;
   const bool buffer_empty = !next_valid_;
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
     status_edge();
-  const bool load = !buffer_empty && (!busy || finishing);
+  const bool load = !buffer_empty && (!busy || finishing) && next_readable();
 
   out_.step_x = false;
   out_.step_y = false;
@@ -128,15 +132,7 @@ inline void GoldenInterp::tick_parallel(const InterpInputs& in) {
       strobe = p >= modulus_;
       phase_ = strobe ? p - modulus_ : p;
     }
-    if (strobe) {
-      const CircleDda::Steps s = circle_.iterate();
-      const bool carry[2] = {s.x, s.y};
-      // Position counters (rtl/position_counter.sv).
-      if (carry[0]) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
-      if (carry[1]) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));
-      out_.step_x = carry[0];
-      out_.step_y = carry[1];
-    }
+    if (strobe || player_running_) player_edge(strobe);
   } else if (finishing && !load) {
     out_.busy = false;
     out_.feed_saturated = false;
@@ -146,44 +142,27 @@ inline void GoldenInterp::tick_parallel(const InterpInputs& in) {
   if (cycle_ == fault_cycle_) fault_edge();
 }
 
-// The same with the bit-serial player (docs/interpolator.md 5.5): the DDA takes 2P clocks
-// per iteration and reads a block's words from the buffer in its first pass.
-inline void GoldenInterp::tick_bit_serial(const InterpInputs& in) {
-  ++cycle_;
-  using State = GoldenTapeDecoder::State;
-  const bool busy = out_.busy;
-  const bool finishing = busy && serial_.done();
-  const bool buffer_empty = !next_valid_;
-  const bool holding = serial_.words();
-  const State dstate = decoder_.state();
-  if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
-    status_edge();
-  // Block buffer: a block is readable once its slot is shown and the player holds none.
-  const bool load = !buffer_empty && !holding && shown_ == slot_ && (!busy || finishing);
-  shown_ = slot_ != (holding && !buffer_empty);
-
-  out_.step_x = false;
-  out_.step_y = false;
-  if (busy && !finishing) {
-    // Feed generator: a strobe always finds the DDA idle unless the block is saturated.
-    bool strobe = saturated_;
-    if (!strobe) {
-      const uint64_t p = phase_ + feed_step_;
-      strobe = p >= modulus_;
-      phase_ = strobe ? p - modulus_ : p;
-    }
+// CircleDda iterates at a strobe; SerialDda (docs/interpolator.md 5.6) starts an iteration
+// at a strobe and plays it over 2P clocks, reading the block's words from the buffer in its
+// first pass.
+inline void GoldenInterp::player_edge(bool strobe) {
+  CircleDda::Steps s;
+  if (cfg_.bit_serial) {
+    const bool words = serial_.words();
     const SerialDda::Edge e = serial_.edge(strobe);
-    if (e.x) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
-    if (e.y) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));
-    out_.step_x = e.x;
-    out_.step_y = e.y;
-  } else if (finishing && !load) {
-    out_.busy = false;
-    out_.feed_saturated = false;
+    s = {e.x, e.y};
+    player_running_ = serial_.running();
+    player_done_ = serial_.done();
+    if (words && !serial_.words()) words_end_cycle_ = cycle_;
+  } else {
+    s = circle_.iterate();
+    player_done_ = circle_.done();
   }
-  if (load) load_block();
-  if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
-  if (cycle_ == fault_cycle_) fault_edge();
+  // Position counters (rtl/position_counter.sv).
+  if (s.x) out_.pos_x = wrap_position(out_.pos_x + (dir_[0] ? 1 : -1));
+  if (s.y) out_.pos_y = wrap_position(out_.pos_y + (dir_[1] ? 1 : -1));
+  out_.step_x = s.x;
+  out_.step_y = s.y;
 }
 
 }  // namespace ncinterp

@@ -42,7 +42,7 @@ struct BlockClocks {
 // - per block and axis, the pulse count equals the increment; the final position is the
 //   sum of the increments;
 // - every pulse position is within the bound of its block: the L1 bound of the chord for a
-//   line (docs/interpolator.md 5.5), the circle bounds above for an arc;
+//   line (docs/interpolator.md 5.6), the circle bounds above for an arc;
 // - each block is busy for ceil(M / F) clocks, or iterations + 1 when saturated, and
 //   feed_saturated_o shows which.
 ::testing::AssertionResult check_program_run(const tape::Program& program,

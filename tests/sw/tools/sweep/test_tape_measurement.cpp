@@ -59,7 +59,7 @@ TEST_F(TapeFile, GoldenModelAtWidthPlaysTheTapeWithinTheBounds) {
   EXPECT_GT(r.blocks, 200u);
   EXPECT_GT(r.frames, 20 * r.blocks);
   EXPECT_GT(r.path_error_max_blu, 0.3);
-  EXPECT_LE(r.path_error_max_blu, 0.7072);  // sqrt(2)/2 BLU, docs/interpolator.md 5.5
+  EXPECT_LE(r.path_error_max_blu, 0.7072);  // sqrt(2)/2 BLU, docs/interpolator.md 5.6
   EXPECT_GT(r.total_error_max_mm, 0.0);
   EXPECT_LE(r.total_error_max_mm, setup.first_stage.tol_mm);
   EXPECT_GT(r.feed_error_worst, 0.0);  // ceil(M/F): never early
