@@ -27,7 +27,8 @@ module feed_generator #(
   input  logic                    clk_i,
   input  logic                    rst_ni,
   input  logic                    load_i,     // a block loads at this edge
-  input  logic [StepWidth-1:0]    step_i,     // its S = F * N
+  input  logic [StepWidth-1:0]    step_i,     // its S = F * N, modulo 2^StepWidth
+  input  logic                    step_over_i, // S >= 2^StepWidth: saturated whatever M
   input  logic                    run_i,      // the playing block has iterations left
   input  logic [ModulusWidth-1:0] modulus_i,  // feed_modulus_i (static)
   output logic                    strobe_o,   // one DDA iteration at this edge
@@ -74,7 +75,7 @@ module feed_generator #(
     if (load_i) begin
       step_d      = RunStepWidth'(step_i);
       phase_d     = PhaseWidth'(lead_step);
-      saturated_d = lead_step >= CmpWidth'(modulus_q);
+      saturated_d = step_over_i || lead_step >= CmpWidth'(modulus_q);
     end else if (run_i) begin
       if (saturated_q) begin
         strobe_o = 1'b1;

@@ -72,7 +72,8 @@ module interp_top #(
   localparam int LeadBits = BitSerial ? $clog2(IncWidth) + 1 : 0;
   // The feed step S = F * N of a block (N <= 2^(W+1) iterations), as wide as its job: any S
   // with S << LeadBits >= M saturates the block whatever its value (feed_generator.sv), so
-  // S saturates at all ones in ModulusWidth - LeadBits + 1 bits (the decoder's).
+  // the decoder keeps S modulo 2^StepWidth, StepWidth = ModulusWidth - LeadBits + 1 (or
+  // exact), and a flag for S >= 2^StepWidth.
   localparam int ExactStepWidth = FeedWidth + IncWidth + 1;
   localparam int StepWidth = ExactStepWidth < ModulusWidth - LeadBits + 1 ? ExactStepWidth
                                                                           : ModulusWidth - LeadBits + 1;
@@ -90,6 +91,7 @@ module interp_top #(
     logic [IncWidth-1:0]  i;
     logic [IncWidth-1:0]  j;
     logic [StepWidth-1:0] step;
+    logic                 step_over;  // S >= 2^StepWidth
     logic [KWidth-1:0]    k;
     logic                 grow_x;
     logic                 grow_y;
@@ -102,6 +104,7 @@ module interp_top #(
   logic [IncWidth-1:0]    dec_dx, dec_dy, dec_i, dec_j;
   logic                   dec_dx_neg, dec_dy_neg;
   logic [StepWidth-1:0]   dec_step;
+  logic                   dec_step_over;
   logic [KWidth-1:0]      dec_k;
   logic                   dec_grow_x, dec_grow_y;
   logic                   dec_end, dec_tape_ended, dec_err;
@@ -125,6 +128,7 @@ module interp_top #(
   logic                   next_dx_neg, next_dy_neg;
   logic [1:0]             next_motion;
   logic [StepWidth-1:0]   next_step;
+  logic                   next_step_over;
   logic [KWidth-1:0]      next_k;
   logic                   next_grow_x, next_grow_y, next_arc;
 
@@ -150,7 +154,8 @@ module interp_top #(
     .blk_n_o(dec_n), .blk_motion_o(dec_motion),
     .blk_dx_o(dec_dx), .blk_dx_neg_o(dec_dx_neg), .blk_dy_o(dec_dy), .blk_dy_neg_o(dec_dy_neg),
     .blk_i_o(dec_i), .blk_j_o(dec_j),
-    .blk_step_o(dec_step), .blk_k_o(dec_k), .blk_grow_x_o(dec_grow_x), .blk_grow_y_o(dec_grow_y),
+    .blk_step_o(dec_step), .blk_step_over_o(dec_step_over), .blk_k_o(dec_k),
+    .blk_grow_x_o(dec_grow_x), .blk_grow_y_o(dec_grow_y),
     .end_o(dec_end), .tape_ended_o(dec_tape_ended), .err_o(dec_err), .err_code_o(dec_err_code),
     .err_block_o(dec_err_block), .err_offset_o(dec_err_offset)
   );
@@ -164,6 +169,7 @@ module interp_top #(
   assign dec_block.i      = dec_i;
   assign dec_block.j      = dec_j;
   assign dec_block.step   = dec_step;
+  assign dec_block.step_over = dec_step_over;
   assign dec_block.k      = dec_k;
   assign dec_block.grow_x = dec_grow_x;
   assign dec_block.grow_y = dec_grow_y;
@@ -187,6 +193,7 @@ module interp_top #(
   assign next_i      = next_block.i;
   assign next_j      = next_block.j;
   assign next_step   = next_block.step;
+  assign next_step_over = next_block.step_over;
   assign next_k      = next_block.k;
   assign next_grow_x = next_block.grow_x;
   assign next_grow_y = next_block.grow_y;
@@ -198,7 +205,7 @@ module interp_top #(
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits))
   u_feed (
     .clk_i, .rst_ni,
-    .load_i(load), .step_i(next_step),
+    .load_i(load), .step_i(next_step), .step_over_i(next_step_over),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
   );

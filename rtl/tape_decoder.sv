@@ -39,8 +39,8 @@ module tape_decoder #(
   parameter int SeqWidth       = 20,
   // Frame offset counter width (error reports).
   parameter int OffsetWidth    = 32,
-  // The feed step S: exact below 2^StepWidth - 1, saturating there (interp_top.sv: any S
-  // that large saturates the block).
+  // The feed step S: its low StepWidth bits and whether it reached 2^StepWidth
+  // (interp_top.sv: any S that large saturates the block).
   parameter int StepWidth      = FeedWidth + IncWidth + 1,
   // The per-block arithmetic in parallel (0) or bit-serial (1, the board's choice): the
   // arc's dry run (arc_prepare.sv) and each digit's x10 + d (tape_word_parser.sv).
@@ -64,8 +64,10 @@ module tape_decoder #(
   output logic                   blk_dy_neg_o,
   output logic [IncWidth-1:0]    blk_i_o,
   output logic [IncWidth-1:0]    blk_j_o,
-  // The feed generator's step S: F << k for a line, F * N for an arc (N < 2^(W+1)).
+  // The feed generator's step S: F << k for a line, F * N for an arc (N < 2^(W+1)), modulo
+  // 2^StepWidth, and S >= 2^StepWidth (the block is saturated).
   output logic [StepWidth-1:0]   blk_step_o,
+  output logic                   blk_step_over_o,
   // k of the block: the line DDA's (bit length of max(|dx|, |dy|)) or the circle DDA's (of
   // the largest coordinate about the centre); for an arc, whether |x|, |y| grow.
   output logic [$clog2(IncWidth+1)-1:0] blk_k_o,
@@ -129,17 +131,15 @@ module tape_decoder #(
   // circle DDA's k and the growth of |x|, |y|, from arc_prepare's geometry when the arc is
   // ready. So the player has nothing to compute at the load.
   logic [KWidth-1:0]    k_q, k_d;
-  // step_q: the block's feed step S, summed in PREPARE (serially: one shift or one add of F
-  // per clock, no multiplier or barrel shifter), saturating at all ones (StepWidth).
+  // step_q: the block's feed step S, summed in PREPARE on one adder, one addition per
+  // clock (no multiplier or barrel shifter): S = 0 at the LF, then S + F for a line's first
+  // clock and an arc's every dry-run iteration, S + S for a line's k doublings. Its low
+  // StepWidth bits; step_over_q: it reached 2^StepWidth (a carry out, or an F that does not
+  // fit), which saturates the block whatever the rest (a flag instead of all ones in S:
+  // the adder's sum goes to the register as it is). feed_in_q: a line's F is still to add.
   // shifts_q: a line's doublings still to do.
-  logic [StepWidth-1:0] step_q, step_d;
-  logic                 step_carry;
-  logic [StepWidth-1:0] step_sum;
-
-  // F as a step: itself, or all ones if it does not fit (then any block saturates).
-  function automatic logic [StepWidth-1:0] feed_step(input logic [FeedWidth-1:0] feed);
-    feed_step = ((FeedWidth + StepWidth)'(feed) >> StepWidth) != '0 ? '1 : StepWidth'(feed);
-  endfunction
+  logic [StepWidth-1:0] step_q, step_d, step_addend, step_sum;
+  logic                 step_over_q, step_over_d, feed_in_q, feed_in_d, step_carry, feed_over;
   logic [KWidth-1:0]    shifts_q, shifts_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
@@ -217,7 +217,7 @@ module tape_decoder #(
     {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok,
-     clear_block, step_carry, step_sum} = 'x;
+     clear_block, step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over} = 'x;
     if (update) begin
       state_d       = state_q;
       n_d           = n_q;
@@ -236,6 +236,8 @@ module tape_decoder #(
       err_offset_d  = err_offset_q;
       k_d           = k_q;
       step_d        = step_q;
+      step_over_d   = step_over_q;
+      feed_in_d     = feed_in_q;
       shifts_d      = shifts_q;
       grow_x_d      = grow_x_q;
       grow_y_d      = grow_y_q;
@@ -331,11 +333,13 @@ module tape_decoder #(
                         fail_code = interp_pkg::ErrMissingFeed;
                       end else begin
                         // Prepared first (the block is cleared at the handoff): S
-                        // starts at F for a line (then k doublings), at 0 for an arc.
-                        state_d  = StPrepare;
-                        k_d      = bit_length(dx_d | dy_d);
-                        shifts_d = k_d;
-                        step_d   = motion_d == interp_pkg::MotionLine ? feed_step(feed_d) : '0;
+                        // starts at 0; a line adds F, then doubles it k times.
+                        state_d     = StPrepare;
+                        k_d         = bit_length(dx_d | dy_d);
+                        shifts_d    = k_d;
+                        step_d      = '0;
+                        step_over_d = 1'b0;
+                        feed_in_d   = motion_d == interp_pkg::MotionLine;
                       end
                     end else begin
                       if (end_blk_d) state_d = StEnd;
@@ -364,28 +368,40 @@ module tape_decoder #(
           fail_code = interp_pkg::ErrValueTooWide;
           fail_offset = offset - 1'b1;  // the digit, the last frame processed
         end
-      end else if (preparing && !in_arc) begin
-        // A line: S = F << k, one doubling per clock, saturating.
-        if (shifts_q == '0) begin
-          state_d = StHold;
-        end else begin
-          step_d   = step_q[StepWidth-1] ? '1 : step_q << 1;
-          shifts_d = shifts_q - 1'b1;
-        end
-      end else if (in_arc) begin
-        // An arc: F once per dry-run iteration, S = F * N, saturating.
-        {step_carry, step_sum} = {1'b0, step_q} + {1'b0, feed_step(feed_q)};
-        if (arc_iterate) step_d = step_carry ? '1 : step_sum;
-        if (arc_done) begin
-          if (arc_err) begin
-            fail = 1'b1;
-            fail_code = arc_code;
-            fail_offset = offset - 1'b1;  // the block's LF, the last frame processed
+      end else if (preparing) begin
+        // The one adder: S + F (a line's first clock, an arc's iterations) or S + S (a
+        // line's doublings). An F wider than S over-runs S by itself.
+        step_addend = !in_arc && !feed_in_q ? step_q : StepWidth'(feed_q);
+        feed_over   = !in_arc && !feed_in_q ? 1'b0
+                                            : ((FeedWidth + StepWidth)'(feed_q) >> StepWidth) != '0;
+        {step_carry, step_sum} = {1'b0, step_q} + {1'b0, step_addend};
+        if (!in_arc) begin
+          // A line: S = F << k: F at the first clock, then one doubling per clock.
+          if (feed_in_q || shifts_q != '0) begin
+            step_d      = step_sum;
+            step_over_d = step_over_q || step_carry || feed_over;
+            feed_in_d   = 1'b0;
+            if (!feed_in_q) shifts_d = shifts_q - 1'b1;
           end else begin
-            state_d  = StHold;
-            k_d      = arc_k;
-            grow_x_d = arc_grow_x;
-            grow_y_d = arc_grow_y;
+            state_d = StHold;
+          end
+        end else begin
+          // An arc: F once per dry-run iteration, S = F * N.
+          if (arc_iterate) begin
+            step_d      = step_sum;
+            step_over_d = step_over_q || step_carry || feed_over;
+          end
+          if (arc_done) begin
+            if (arc_err) begin
+              fail = 1'b1;
+              fail_code = arc_code;
+              fail_offset = offset - 1'b1;  // the block's LF, the last frame processed
+            end else begin
+              state_d  = StHold;
+              k_d      = arc_k;
+              grow_x_d = arc_grow_x;
+              grow_y_d = arc_grow_y;
+            end
           end
         end
       end else if (state_q == StHold) begin
@@ -440,6 +456,8 @@ module tape_decoder #(
       j_q  <= '0;  j_neg_q  <= 1'b0;
       k_q           <= '0;
       step_q        <= '0;
+      step_over_q   <= 1'b0;
+      feed_in_q     <= 1'b0;
       shifts_q      <= '0;
       grow_x_q      <= 1'b0;
       grow_y_q      <= 1'b0;
@@ -461,6 +479,8 @@ module tape_decoder #(
       j_q  <= j_d;   j_neg_q  <= j_neg_d;
       k_q           <= k_d;
       step_q        <= step_d;
+      step_over_q   <= step_over_d;
+      feed_in_q     <= feed_in_d;
       shifts_q      <= shifts_d;
       grow_x_q      <= grow_x_d;
       grow_y_q      <= grow_y_d;
@@ -484,6 +504,7 @@ module tape_decoder #(
   assign blk_i_o       = i_q;
   assign blk_j_o       = j_q;
   assign blk_step_o    = step_q;
+  assign blk_step_over_o = step_over_q;
   assign blk_k_o       = k_q;
   assign blk_grow_x_o  = grow_x_q;
   assign blk_grow_y_o  = grow_y_q;

@@ -41,7 +41,8 @@ module feed_generator_props #(
   assign step = SW'(feed_i) * SW'(count_i);
 
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(MW), .LeadBits(LB)) u_dut (
-    .clk_i, .rst_ni, .load_i, .step_i(StepWidth'(step)), .run_i(run), .modulus_i,
+    .clk_i, .rst_ni, .load_i, .step_i(StepWidth'(step)), .step_over_i(1'b0), .run_i(run),
+    .modulus_i,
     .strobe_o(strobe), .saturated_o(saturated)
   );
 

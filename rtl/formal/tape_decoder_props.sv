@@ -7,11 +7,12 @@
 // - ap_ready_bounded (liveness in bounded-response form): frame_ready_o is never low for
 //   more than K consecutive clocks unless the decoder is in error or holds a block. K =
 //   max(D, (5W + 4)(2W + 4)) + 2 covers an arc's preparation (its dry run, D = 2^(W+1) >
-//   N clocks, or 2W 2^(W+1) + W with BitSerial, and the bit-serial radius check,
+//   N clocks, or at most 2W 2^(W+1) + W with BitSerial (2P N), and the bit-serial radius check,
 //   docs/interpolator.md 3.5) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
 //   frames, or an error, and nothing else stalls the reader;
 // - ap_line_ready_bounded: while the modal motion is G01 (so no arc is prepared), the bound
-//   is K_line = W + 3: a line's k + 1 doublings and the clocks around them; with BitSerial
+//   is K_line = W + 4: a line's addition of F, its k doublings and the clocks around them
+//   (W + 3 until the seventh session, when S was F at the LF); with BitSerial
 //   at least NumWidth + 1, a digit's x10 + d pass and the clock after it.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
@@ -44,11 +45,11 @@ module tape_decoder_props #(
   localparam int NumWidth = (W > FW ? W : FW) > (NW > 7 ? NW : 7) ? (W > FW ? W : FW)
                                                                    : (NW > 7 ? NW : 7);
   localparam int KDigit = BitSerial ? NumWidth + 1 : 0;
-  localparam int KLine = W + 3 > KDigit ? W + 3 : KDigit;
+  localparam int KLine = W + 4 > KDigit ? W + 4 : KDigit;
   localparam int LowWidth = $clog2(K + 2);
-  localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + KWidth + 2;
+  localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + 1 + KWidth + 2;
 
-  logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y;
+  logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y, step_over;
   logic              end_blk, tape_ended, err;
   logic [NW-1:0]     n, err_block;
   logic [1:0]        motion;
@@ -65,13 +66,13 @@ module tape_decoder_props #(
     .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
     .blk_valid_o(blk_valid), .blk_ready_i, .blk_n_o(n), .blk_motion_o(motion),
     .blk_dx_o(dx), .blk_dx_neg_o(dx_neg), .blk_dy_o(dy), .blk_dy_neg_o(dy_neg),
-    .blk_i_o(i), .blk_j_o(j), .blk_step_o(step), .blk_k_o(k), .blk_grow_x_o(grow_x),
-    .blk_grow_y_o(grow_y), .end_o(end_blk), .tape_ended_o(tape_ended), .err_o(err),
+    .blk_i_o(i), .blk_j_o(j), .blk_step_o(step), .blk_step_over_o(step_over), .blk_k_o(k),
+    .blk_grow_x_o(grow_x), .blk_grow_y_o(grow_y), .end_o(end_blk), .tape_ended_o(tape_ended), .err_o(err),
     .err_code_o(err_code), .err_block_o(err_block), .err_offset_o(err_offset)
   );
 
   logic [BW-1:0] block;
-  assign block = {n, motion, dx_neg, dx, dy_neg, dy, i, j, step, k, grow_x, grow_y};
+  assign block = {n, motion, dx_neg, dx, dy_neg, dy, i, j, step, step_over, k, grow_x, grow_y};
 
   // Model: clocks frame_ready has been low (saturating), the same while the modal motion
   // is G01, the tape end seen.

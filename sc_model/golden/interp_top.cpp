@@ -22,7 +22,7 @@ void require(bool ok, const char* what) {
 GoldenInterp::GoldenInterp(const InterpConfig& cfg)
     : cfg_(cfg), decoder_(cfg), serial_(cfg.inc_width) {
   // The phase sum is formed only when not saturated (S < M < 2^62), so it cannot overflow.
-  // |dx|, |dy| are held in 32 bits; S saturates below 2^63 (GoldenTapeDecoder::step_max()).
+  // |dx|, |dy| are held in 32 bits; S is kept below 2^63 (GoldenTapeDecoder::step_mask()).
   require(cfg.inc_width >= 1 && cfg.inc_width <= 32, "inc_width must be 1..32");
   require(cfg.feed_width >= 1 && cfg.feed_width + cfg.inc_width <= 64,
           "feed_width + inc_width must be <= 64");
@@ -83,7 +83,7 @@ void GoldenInterp::load_block() {
   // Feed generator: the phase starts lead_bits_ doublings of S ahead (only an unsaturated
   // block uses it, and then S << lead_bits_ < M).
   feed_step_ = b.step;
-  saturated_ = feed_step_ >= saturation_step_;
+  saturated_ = b.step_over || feed_step_ >= saturation_step_;
   phase_ = saturated_ ? 0 : feed_step_ << lead_bits_;
   next_valid_ = false;
   out_.dir_x = dir_[0];

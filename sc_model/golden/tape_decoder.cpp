@@ -24,10 +24,10 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
       feed_limit_(low_mask(cfg.feed_width)),
       seq_limit_(low_mask(cfg.seq_width)),
       offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
-      step_max_(step_max(cfg)),
+      step_mask_(step_mask(cfg)),
       arc_(cfg.inc_width, cfg.bit_serial) {}
 
-uint64_t GoldenTapeDecoder::step_max(const InterpConfig& cfg) {
+uint64_t GoldenTapeDecoder::step_mask(const InterpConfig& cfg) {
   const unsigned exact = cfg.feed_width + cfg.inc_width + 1;
   const unsigned job = cfg.modulus_width - SerialDda::player_lead_bits(cfg) + 1;
   return low_mask(std::min(exact, job));
@@ -52,6 +52,7 @@ void GoldenTapeDecoder::reset() {
   block_.motion = 1;
   block_.feed = 0;
   clear_block();
+  feed_in_ = false;
   shifts_ = 0;
   arc_.reset();
   err_code_ = TapeError::kNone;
@@ -275,11 +276,13 @@ bool GoldenTapeDecoder::commit_word(Word w) {
 void GoldenTapeDecoder::end_of_block(uint32_t offset) {
   if (motion_block_) {
     if (block_.feed == 0) return fail(TapeError::kMissingFeed, offset);
-    // Prepared first (cleared at the handoff): S starts at F for a line, which is then
-    // doubled k times (k = bit length of max(|dx|, |dy|)), and at 0 for an arc.
+    // Prepared first (cleared at the handoff): S starts at 0; a line adds F, then doubles
+    // it k times (k = bit length of max(|dx|, |dy|)).
     const uint32_t d = block_.dx | block_.dy;
     shifts_ = d == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(d));
-    block_.step = block_.is_arc() ? 0 : std::min(block_.feed, step_max_);
+    block_.step = 0;
+    block_.step_over = false;
+    feed_in_ = !block_.is_arc();
     state_ = State::kPrepare;
     return;
   }
@@ -287,19 +290,31 @@ void GoldenTapeDecoder::end_of_block(uint32_t offset) {
   clear_block();
 }
 
+void GoldenTapeDecoder::add_to_step(uint64_t addend, bool addend_over) {
+  // The RTL's one adder on StepWidth bits: the sum's low bits, and the carry out (or an
+  // addend that does not fit) sets the over flag for good. step, addend <= step_mask_ <
+  // 2^63: no overflow here.
+  const uint64_t sum = block_.step + (addend & step_mask_);
+  block_.step_over = block_.step_over || sum > step_mask_ || addend_over;
+  block_.step = sum & step_mask_;
+}
+
 void GoldenTapeDecoder::prepare_edge() {
-  if (!block_.is_arc()) {  // a line: S = F << k, one doubling per clock
-    if (shifts_ == 0) {
+  if (!block_.is_arc()) {  // a line: S = F << k: F at the first clock, then one doubling per clock
+    if (feed_in_) {
+      add_to_step(block_.feed, block_.feed > step_mask_);
+      feed_in_ = false;
+    } else if (shifts_ == 0) {
       state_ = State::kHold;
     } else {
-      block_.step = block_.step > step_max_ >> 1 ? step_max_ : block_.step << 1;
+      add_to_step(block_.step, false);
       --shifts_;
     }
     return;
   }
   const ArcPrepare::Result r = arc_.edge(block_.arc_words());
   if (r.iterate)  // F once per dry-run iteration: S = F * N
-    block_.step = std::min(block_.step + std::min(block_.feed, step_max_), step_max_);
+    add_to_step(block_.feed, block_.feed > step_mask_);
   if (!r.done) return;
   if (r.error != TapeError::kNone) {
     fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read

@@ -24,9 +24,11 @@ struct DecodedBlock {
   bool dx_neg = false, dy_neg = false, i_neg = false, j_neg = false;
   uint64_t feed = 0;
   // The feed generator's step S = F * N (N iterations: 2^k for a line, the circle DDA's
-  // count for an arc); summed while the block is prepared, final when it is held; saturating
-  // at GoldenTapeDecoder::step_max() (a step that large saturates the block).
+  // count for an arc); summed while the block is prepared, final when it is held: its low
+  // bits, modulo 2^StepWidth (GoldenTapeDecoder::step_mask()), and whether it reached
+  // 2^StepWidth (step_over: the block is saturated whatever the rest).
   uint64_t step = 0;
+  bool step_over = false;
 
   bool is_arc() const { return motion != 1; }
   ArcWords arc_words() const {
@@ -56,9 +58,10 @@ class GoldenTapeDecoder {
   // (the caller copies block() into the buffer first).
   void edge(const InterpInputs& in, bool buffer_empty);
 
-  // S saturates at all ones in interp_top.sv's StepWidth = min(FeedWidth + W + 1,
-  // ModulusWidth - LeadBits + 1) bits: beyond M >> LeadBits every S saturates the block.
-  static uint64_t step_max(const InterpConfig& cfg);
+  // S is kept in interp_top.sv's StepWidth = min(FeedWidth + W + 1, ModulusWidth -
+  // LeadBits + 1) bits, plus a flag for S >= 2^StepWidth: beyond M >> LeadBits every S
+  // saturates the block. This is 2^StepWidth - 1.
+  static uint64_t step_mask(const InterpConfig& cfg);
   State state() const { return state_; }
   bool ready() const { return ready_; }
   bool tape_ended() const { return tape_end_q_; }
@@ -88,6 +91,7 @@ class GoldenTapeDecoder {
   bool commit_word(Word w);
   void end_of_block(uint32_t offset);
   void prepare_edge();
+  void add_to_step(uint64_t addend, bool addend_over);
   void handoff();
   void clear_block();
   void fail(TapeError code, uint32_t offset);
@@ -99,7 +103,7 @@ class GoldenTapeDecoder {
   unsigned frac_digits_, feed_frac_digits_;
   uint64_t inc_limit_, feed_limit_, seq_limit_;
   uint32_t offset_mask_;
-  uint64_t step_max_;  // all ones in the RTL's StepWidth bits
+  uint64_t step_mask_;  // step_mask()
 
   // Block assembly: the decoder's state.
   State state_ = State::kLeader;
@@ -123,8 +127,9 @@ class GoldenTapeDecoder {
   // Block assembly (n, motion and feed are modal: never cleared at a block start).
   DecodedBlock block_;
   bool n_seen_ = false, any_word_ = false, motion_block_ = false, end_block_ = false;
-  // The block being prepared (kPrepare): a line's doublings still to do (the RTL's
-  // shifts_q; S is block_.step), and an arc's checks and dry run.
+  // The block being prepared (kPrepare): a line's F still to add and doublings still to do
+  // (the RTL's feed_in_q and shifts_q; S is block_.step), and an arc's checks and dry run.
+  bool feed_in_ = false;
   unsigned shifts_ = 0;
   ArcPrepare arc_;
   // Error capture.

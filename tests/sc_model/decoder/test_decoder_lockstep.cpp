@@ -125,6 +125,7 @@ template <typename Model>
     check("blk_i_o", m.blk_i_o, b.i);
     check("blk_j_o", m.blk_j_o, b.j);
     check("blk_step_o", m.blk_step_o, b.step);
+    check("blk_step_over_o", m.blk_step_over_o, b.step_over);
   }
   if (m.err_o) {
     check("err_code_o", m.err_code_o, static_cast<uint64_t>(g.error_code()));
@@ -142,7 +143,7 @@ template <typename Model>
 // How the tapes ended: a program decoded to its end, an error (by code).
 struct Outcomes {
   int ended = 0, held_blocks = 0;
-  int saturated_steps = 0;  // held blocks whose S saturated (GoldenTapeDecoder::step_max)
+  int saturated_steps = 0;  // held blocks whose S reached 2^StepWidth (step_over)
   int errors[16] = {0};
 };
 
@@ -178,7 +179,7 @@ template <typename Model>
       const bool free = rng() % 100 < free_percent;
       if (free && g.state() == GoldenTapeDecoder::State::kHold) {
         ++out.held_blocks;
-        out.saturated_steps += g.block().step == GoldenTapeDecoder::step_max(c);
+        out.saturated_steps += g.block().step_over;
       }
       if (offer && m.frame_ready_o) ++next;
       m.frame_valid_i = in.frame_valid;

@@ -136,8 +136,8 @@ TEST(GoldenInterp, ZeroMoveIsADwellOfOneOverF) {
 
 // Handshake and latency (docs 3.1, 3.3, 4): one frame per clock into the input register,
 // processed one edge later; after the LF of a motion block ready drops while a frame waits
-// behind the block being prepared and held; a line's preparation takes k + 1 edges (S = F
-// doubled k times), and the block loads k + 4 edges after its LF was taken.
+// behind the block being prepared and held; a line's preparation takes k + 2 edges (S = 0
+// + F, then doubled k times), and the block loads k + 5 edges after its LF was taken.
 TEST(GoldenInterp, HandshakeAndBlockLatency) {
   const std::string text = "%\nN1 G01 X0.002 F100.000\nM02\n%\n";
   const size_t lf = text.find('\n', text.find("N1"));
@@ -158,14 +158,14 @@ TEST(GoldenInterp, HandshakeAndBlockLatency) {
   // Frame i is taken at edge i + 1 up to the frame after the LF (taken at edge lf + 2).
   for (size_t i = 0; i <= lf + 1; ++i) EXPECT_EQ(taken[i + 1], i + 1);
   EXPECT_TRUE(ready[lf + 1]);
-  // LF processed at lf + 2: PREPARE, then HOLD at lf + k + 3, with a frame waiting.
-  for (size_t e = lf + 2; e <= lf + k + 3; ++e) EXPECT_FALSE(ready[e]) << e;
-  EXPECT_TRUE(ready[lf + k + 4]);  // handed to the buffer at lf + k + 4
-  EXPECT_EQ(taken[lf + k + 4], lf + 2);
-  EXPECT_EQ(taken[lf + k + 5], lf + 3);
-  EXPECT_FALSE(busy[lf + k + 4]);
-  // LF taken at e, processed e+1, prepared e+2 .. e+k+2, buffer e+k+3, load e+k+4.
-  EXPECT_TRUE(busy[lf + k + 5]);
+  // LF processed at lf + 2: PREPARE, then HOLD at lf + k + 4, with a frame waiting.
+  for (size_t e = lf + 2; e <= lf + k + 4; ++e) EXPECT_FALSE(ready[e]) << e;
+  EXPECT_TRUE(ready[lf + k + 5]);  // handed to the buffer at lf + k + 5
+  EXPECT_EQ(taken[lf + k + 5], lf + 2);
+  EXPECT_EQ(taken[lf + k + 6], lf + 3);
+  EXPECT_FALSE(busy[lf + k + 5]);
+  // LF taken at e, processed e+1, prepared e+2 .. e+k+3, buffer e+k+4, load e+k+5.
+  EXPECT_TRUE(busy[lf + k + 6]);
 }
 
 TEST(GoldenInterp, BlocksFollowWithoutGapsWhenTheReaderIsFast) {
@@ -203,7 +203,7 @@ TEST(GoldenInterp, SlowReaderLeavesObservableGaps) {
   ASSERT_EQ(rec.starts.size(), 2u);
   EXPECT_GT(gap, 0u);
   const uint64_t k = 3;  // N2's: bit length of max(|3|, |-4|)
-  EXPECT_EQ(rec.starts[1].cycle, lf2_taken + k + 4);  // see HandshakeAndBlockLatency
+  EXPECT_EQ(rec.starts[1].cycle, lf2_taken + k + 5);  // see HandshakeAndBlockLatency
   EXPECT_TRUE(check_line_program(prog, rec));
 }
 
