@@ -114,15 +114,20 @@ module dda_serial #(
   function automatic logic word_bit(input logic [IncWidth-1:0] word, input logic [BitWidth-1:0] i);
     word_bit = 32'(i) < IncWidth ? word[i] : 1'b0;
   endfunction
+  // (The line/arc choice is made on the selected bits, not on the words: one multiplexer,
+  // not W.)
+  logic cnt_x_bit, cnt_y_bit;
+  assign cnt_x_bit = word_bit(cnt_x_i, bit_q);
+  assign cnt_y_bit = word_bit(cnt_y_i, bit_q);
   always_comb begin
     cur = read_q;
     if (words_q) begin
       cur[AccX] = top_bit;
       cur[AccY] = top_bit;
-      cur[MagX] = word_bit(line_q ? cnt_y_i : x_i, bit_q);
-      cur[MagY] = word_bit(line_q ? cnt_x_i : y_i, bit_q);
-      cur[CntX] = line_q ? below_k : word_bit(cnt_x_i, bit_q);
-      cur[CntY] = word_bit(cnt_y_i, bit_q);
+      cur[MagX] = line_q ? cnt_y_bit : word_bit(x_i, bit_q);
+      cur[MagY] = line_q ? cnt_x_bit : word_bit(y_i, bit_q);
+      cur[CntX] = line_q ? below_k : cnt_x_bit;
+      cur[CntY] = cnt_y_bit;
     end
   end
 
