@@ -16,28 +16,13 @@
 #include "uart_rx_model.h"
 #include "uart_tx_model.h"
 #include "verilated.h"
+#include "verilated_clock.h"
 
 namespace ncinterp::board {
 namespace {
 
-template <typename Model>
-void clock_edge(Model& m) {
-  m.clk_i = 1;
-  m.eval();
-  m.clk_i = 0;
-  m.eval();
-}
-
-// The first eval() only settles the model (Verilator sees no edge on it): clock low first.
-template <typename Model>
-void reset(Model& m) {
-  m.rst_ni = 0;
-  m.clk_i = 0;
-  m.eval();
-  clock_edge(m);
-  m.rst_ni = 1;
-  m.eval();
-}
+using test::clock_edge;
+using test::reset;
 
 TEST(BoardLockstep, UartRxMatchesItsTwin) {
   std::mt19937_64 rng(14);

@@ -18,27 +18,15 @@
 #include "dda_circle.h"
 #include "arc_cases.h"
 #include "verilated.h"
+#include "verilated_clock.h"
 
 namespace ncinterp {
 namespace {
 
 using circle_study::QuadrantArc;
 
-template <typename Model>
-void clock_edge(Model& m) {
-  m.clk_i = 1;
-  m.eval();
-  m.clk_i = 0;
-  m.eval();
-}
-
-template <typename Model>
-void reset(Model& m) {
-  m.rst_ni = 0;
-  clock_edge(m);
-  m.rst_ni = 1;
-  m.eval();
-}
+using test::clock_edge;
+using test::reset;
 
 // Plays one arc on the verilated dda_circle and on CircleDda with the same random strobes;
 // returns a failure naming the first clock and signal that differ.

@@ -18,19 +18,14 @@
 #include "arc_geometry.h"
 #include "dda_serial.h"
 #include "verilated.h"
+#include "verilated_clock.h"
 
 namespace ncinterp {
 namespace {
 
 using circle_study::QuadrantArc;
 
-template <typename Model>
-void clock_edge(Model& m) {
-  m.clk_i = 1;
-  m.eval();
-  m.clk_i = 0;
-  m.eval();
-}
+using test::clock_edge;
 
 // A block as the player loads it (dda_serial's load inputs).
 struct Block {
@@ -156,21 +151,8 @@ template <typename Model>
 template <typename Model>
 std::unique_ptr<Model> make_model(VerilatedContext* ctx) {
   auto m = std::make_unique<Model>(ctx);
-  m->rst_ni = 0;
-  clock_edge(*m);
-  m->rst_ni = 1;
-  m->eval();
+  test::reset(*m);
   return m;
-}
-
-QuadrantArc arc(int64_t x0, int64_t y0, int64_t x1, int64_t y1, bool ccw) {
-  QuadrantArc a;
-  a.x0 = x0;
-  a.y0 = y0;
-  a.x1 = x1;
-  a.y1 = y1;
-  a.ccw = ccw;
-  return a;
 }
 
 TEST(DdaSerialLockstep, EveryArcAndLineOfAFourBitRegister) {
@@ -183,7 +165,7 @@ TEST(DdaSerialLockstep, EveryArcAndLineOfAFourBitRegister) {
       for (int64_t x1 = -15; x1 <= 15; ++x1)
         for (int64_t y1 = -15; y1 <= 15; ++y1)
           for (bool ccw : {false, true}) {
-            const QuadrantArc a = arc(x0, y0, x1, y1, ccw);
+            const QuadrantArc a{x0, y0, x1, y1, ccw};
             if (check_arc(a.words(), 4) != TapeError::kNone) continue;
             ASSERT_TRUE(lockstep(*m, 4, arc_block(a, 4), rng));
             ++arcs;

@@ -20,6 +20,7 @@
 #include "Vtape_decoder_serial_narrow.h"
 #include "tape_decoder.h"
 #include "verilated.h"
+#include "verilated_clock.h"
 
 namespace ncinterp {
 namespace {
@@ -93,13 +94,7 @@ std::vector<uint8_t> random_tape(std::mt19937_64& rng, const InterpConfig& c) {
   return frames;
 }
 
-template <typename Model>
-void clock_edge(Model& m) {
-  m.clk_i = 1;
-  m.eval();
-  m.clk_i = 0;
-  m.eval();
-}
+using test::clock_edge;
 
 // The RTL's outputs against the golden decoder's state after the same edge.
 template <typename Model>
