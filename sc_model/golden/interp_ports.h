@@ -28,7 +28,7 @@ struct InterpConfig {
   unsigned modulus_width = 48;    // ModulusWidth
   // BitSerial: the DDA of the player and of the arc's dry run (SerialDda, 2P clocks per
   // iteration) and x10 + d bit-serial, the block buffer in block RAM (a block can load only
-  // once the RAM's read shows it: GoldenInterp's slot_, shown_).
+  // once the RAM's read shows it: GoldenInterp::next_readable()).
   bool bit_serial = false;
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
