@@ -112,7 +112,10 @@ module tape_word_parser #(
      word_start_o} = 'x;
     if (char_valid_i) begin
       is_blank  = char_i == interp_pkg::ChSpace || char_i == interp_pkg::ChCr;
-      is_digit  = char_i >= interp_pkg::ChZero && char_i <= interp_pkg::ChNine;
+      // '0' to '9' (0x30 to 0x39) by its bits, not as a range compare: synthesis makes
+      // a compare a carry chain, and this one starts the decoder's longest path.
+      is_digit  = char_i[6:4] == interp_pkg::ChZero[6:4] &&
+                  (!char_i[3] || char_i[2:1] == 2'b00);
       is_sign   = char_i == interp_pkg::ChPlus || char_i == interp_pkg::ChMinus;
       is_dot    = char_i == interp_pkg::ChDot;
       is_letter = 1'b1;
