@@ -9,19 +9,19 @@
 //     the words' meaning (G and F are modal), the block's end, the handoff, and the first
 //     error, with its code, the bad block's N (or the previous one) and the frame's offset.
 // A motion block is prepared before it is held: the feed generator's step S is summed here
-// serially, on one register. A line's S = F << k takes k shifts; an arc block (G02/G03) is
-// checked and dry-run by arc_prepare.sv (3.5), and F is added at each of its circle DDA's
-// N iterations: S = F * N. The error is only reported by interp_top once every good block
+// serially, on one register and one adder: a line's S = F << k is F added once, then
+// doubled (S + S) k times; an arc block (G02/G03) is checked and dry-run by arc_prepare.sv
+// (3.5), and F is added at each of its circle DDA's N iterations: S = F * N. The error is only reported by interp_top once every good block
 // has played.
 // Golden twin: GoldenTapeDecoder (sc_model/golden/tape_decoder.h), whose sections "Frame
 // input", "Word parser" and "Block assembly and error capture" follow these three parts
 // decision by decision.
 //
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
-// a motion block puts the decoder in PREPARE: a line for k + 1 clocks (S = F at the LF,
-// doubled at the next k edges, HOLD at the one after), an arc until arc_prepare is done
-// (max(N, C) clocks, or max(2PN, C) with BitSerial; C = (5W + 4)(2W + 4) for the
-// radius check), then HOLD or ERROR; the block buffer takes a held block at the first edge
+// a motion block puts the decoder in PREPARE: a line for k + 2 clocks (S = 0 at the LF,
+// F at the next edge, doubled at the k edges after, HOLD at the one after), an arc until
+// arc_prepare is done (max(N, C) clocks, or max(2PN, C) with BitSerial; C = (5W + 4)(2W + 4)
+// for the radius check), then HOLD or ERROR; the block buffer takes a held block at the first edge
 // where it is empty (blk_ready_i). With BitSerial a digit processed at edge e holds the next
 // frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the word's limit is
 // an error at edge e + NumWidth).
