@@ -21,7 +21,7 @@
 // register; with the RAM once the registered read shows its slot, one edge after the take
 // or after hold_i falls.
 // Golden twin: the section "Block buffer" of GoldenInterp::tick()
-// (sc_model/golden/interp_top.h; slot_ and shown_ are the RAM's).
+// (sc_model/golden/interp_top.h), whose next_readable() is when the RAM's read shows the block.
 module block_buffer #(
   parameter int Width    = 8,
   parameter bit InRam    = 1'b0,
