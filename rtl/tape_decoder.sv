@@ -11,8 +11,8 @@
 // A motion block is prepared before it is held: the feed generator's step S is summed here
 // serially, on one register and one adder: a line's S = F << k is F added once, then
 // doubled (S + S) k times; an arc block (G02/G03) is checked and dry-run by arc_prepare.sv
-// (3.5), and F is added at each of its circle DDA's N iterations: S = F * N. The error is only reported by interp_top once every good block
-// has played.
+// (3.5), and F is added at each of its circle DDA's N iterations: S = F * N. The error is
+// only reported by interp_top once every good block has played.
 // Golden twin: GoldenTapeDecoder (sc_model/golden/tape_decoder.h), whose sections "Frame
 // input", "Word parser" and "Block assembly and error capture" follow these three parts
 // decision by decision.
@@ -21,10 +21,10 @@
 // a motion block puts the decoder in PREPARE: a line for k + 2 clocks (S = 0 at the LF,
 // F at the next edge, doubled at the k edges after, HOLD at the one after), an arc until
 // arc_prepare is done (max(N, C) clocks, or max(2PN, C) with BitSerial; C = (5W + 4)(2W + 4)
-// for the radius check), then HOLD or ERROR; the block buffer takes a held block at the first edge
-// where it is empty (blk_ready_i). With BitSerial a digit processed at edge e holds the next
-// frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the word's limit is
-// an error at edge e + NumWidth).
+// for the radius check), then HOLD or ERROR; the block buffer takes a held block at the
+// first edge where it is empty (blk_ready_i). With BitSerial a digit processed at edge e
+// holds the next frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the
+// word's limit is an error at edge e + NumWidth).
 // tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(
@@ -139,7 +139,8 @@ module tape_decoder #(
   // the adder's sum goes to the register as it is). feed_in_q: a line's F is still to add.
   // shifts_q: a line's doublings still to do.
   logic [StepWidth-1:0] step_q, step_d, step_addend, step_sum;
-  logic                 step_over_q, step_over_d, feed_in_q, feed_in_d, step_carry, feed_over;
+  logic                 step_over_q, step_over_d, feed_in_q, feed_in_d, step_carry, feed_over,
+                        step_add;
   logic [KWidth-1:0]    shifts_q, shifts_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
@@ -217,7 +218,8 @@ module tape_decoder #(
     {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok,
-     clear_block, step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over} = 'x;
+     clear_block, step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
+     step_add} = 'x;
     if (update) begin
       state_d       = state_q;
       n_d           = n_q;
@@ -375,33 +377,27 @@ module tape_decoder #(
         feed_over   = !in_arc && !feed_in_q ? 1'b0
                                             : ((FeedWidth + StepWidth)'(feed_q) >> StepWidth) != '0;
         {step_carry, step_sum} = {1'b0, step_q} + {1'b0, step_addend};
+        // A line adds F at its first clock, then doubles once per clock (S = F << k); an
+        // arc adds F once per dry-run iteration (S = F * N).
+        step_add = in_arc ? arc_iterate : feed_in_q || shifts_q != '0;
+        if (step_add) begin
+          step_d      = step_sum;
+          step_over_d = step_over_q || step_carry || feed_over;
+        end
         if (!in_arc) begin
-          // A line: S = F << k: F at the first clock, then one doubling per clock.
-          if (feed_in_q || shifts_q != '0) begin
-            step_d      = step_sum;
-            step_over_d = step_over_q || step_carry || feed_over;
-            feed_in_d   = 1'b0;
-            if (!feed_in_q) shifts_d = shifts_q - 1'b1;
+          feed_in_d = 1'b0;
+          if (!step_add) state_d = StHold;
+          else if (!feed_in_q) shifts_d = shifts_q - 1'b1;
+        end else if (arc_done) begin
+          if (arc_err) begin
+            fail = 1'b1;
+            fail_code = arc_code;
+            fail_offset = offset - 1'b1;  // the block's LF, the last frame processed
           end else begin
-            state_d = StHold;
-          end
-        end else begin
-          // An arc: F once per dry-run iteration, S = F * N.
-          if (arc_iterate) begin
-            step_d      = step_sum;
-            step_over_d = step_over_q || step_carry || feed_over;
-          end
-          if (arc_done) begin
-            if (arc_err) begin
-              fail = 1'b1;
-              fail_code = arc_code;
-              fail_offset = offset - 1'b1;  // the block's LF, the last frame processed
-            end else begin
-              state_d  = StHold;
-              k_d      = arc_k;
-              grow_x_d = arc_grow_x;
-              grow_y_d = arc_grow_y;
-            end
+            state_d  = StHold;
+            k_d      = arc_k;
+            grow_x_d = arc_grow_x;
+            grow_y_d = arc_grow_y;
           end
         end
       end else if (state_q == StHold) begin
