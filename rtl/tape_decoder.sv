@@ -123,9 +123,12 @@ module tape_decoder #(
   logic [SeqWidth-1:0]  n_q, n_d;
   logic [1:0]           motion_q, motion_d;
   logic [FeedWidth-1:0] feed_q, feed_d;
-  logic [IncWidth-1:0]  dx_q, dx_d, dy_q, dy_d, i_q, i_d, j_q, j_d;
-  logic                 dx_neg_q, dx_neg_d, dy_neg_q, dy_neg_d;
-  logic                 i_neg_q, i_neg_d, j_neg_q, j_neg_d;
+  // X, Y, I, J (sign and magnitude): each loads the word parser's number when its word is
+  // committed (load_dx ...) and clears when the block ends, nothing else, so a bit is a
+  // flip-flop with its enable and synchronous reset and no multiplexer in front.
+  logic [IncWidth-1:0]  dx_q, dy_q, i_q, j_q;
+  logic                 dx_neg_q, dy_neg_q, i_neg_q, j_neg_q;
+  logic                 load_dx, load_dy, load_i, load_j;
   // k of the held block: for a line the bit length of (|dx| | |dy|) = bit length of
   // max(|dx|, |dy|) (the line DDA runs 2^k iterations), computed at the LF; for an arc the
   // circle DDA's k and the growth of |x|, |y|, from arc_prepare's geometry when the arc is
@@ -161,6 +164,7 @@ module tape_decoder #(
   logic [3:0]             fail_code;
   logic [OffsetWidth-1:0] fail_offset;
   logic                   word_ok;      // the word ended by this frame was committed
+  logic                   word_commit;  // a word ends at this edge (its register loads)
   logic                   clear_block;  // the block's per-block registers clear at this edge
   // The block being prepared (StPrepare); for an arc, arc_prepare's result is in the clock
   // with arc_done, and arc_iterate marks its dry run's iterations. preparing and in_arc are
@@ -215,20 +219,18 @@ module tape_decoder #(
     // the registers keep their values (the always_ff's enable), so the next-state values
     // are don't-care ('x): the verilated model skips them (fast) and synthesis folds the 'x
     // away (no gate per next-state bit).
-    {state_d, n_d, motion_d, feed_d, dx_d, dx_neg_d, dy_d, dy_neg_d, i_d, i_neg_d, j_d, j_neg_d,
+    {state_d, n_d, motion_d, feed_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok,
-     clear_block, step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
+     step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
      step_add} = 'x;
+    word_commit = 1'b0;
+    clear_block = 1'b0;
     if (update) begin
       state_d       = state_q;
       n_d           = n_q;
       motion_d      = motion_q;
       feed_d        = feed_q;
-      dx_d = dx_q;  dx_neg_d = dx_neg_q;
-      dy_d = dy_q;  dy_neg_d = dy_neg_q;
-      i_d  = i_q;   i_neg_d  = i_neg_q;
-      j_d  = j_q;   j_neg_d  = j_neg_q;
       n_seen_d      = n_seen_q;
       any_word_d    = any_word_q;
       motion_blk_d  = motion_blk_q;
@@ -247,7 +249,6 @@ module tape_decoder #(
       fail_code     = interp_pkg::ErrParity;
       fail_offset   = offset;
       word_ok       = 1'b1;
-      clear_block   = 1'b0;
 
       if (take) begin
         if (parity_err) begin
@@ -272,6 +273,7 @@ module tape_decoder #(
               end else if (delimiter) begin
                 // The word this character ends is committed first.
                 if (word_end) begin
+                  word_commit = 1'b1;
                   unique case (word_letter)
                     interp_pkg::ChN: n_d = word_value[SeqWidth-1:0];
                     // A G or M code is <= 99 (the word parser's limit for them): its
@@ -289,26 +291,9 @@ module tape_decoder #(
                       if (word_value[6:0] == 7'd2 || word_value[6:0] == 7'd30) end_blk_d = 1'b1;
                       else word_ok = 1'b0;
                     end
-                    interp_pkg::ChX: begin
-                      dx_d = word_value[IncWidth-1:0];
-                      dx_neg_d = word_neg;
+                    // X, Y, I, J load their registers (load_dx ... below).
+                    interp_pkg::ChX, interp_pkg::ChY, interp_pkg::ChI, interp_pkg::ChJ:
                       motion_blk_d = 1'b1;
-                    end
-                    interp_pkg::ChY: begin
-                      dy_d = word_value[IncWidth-1:0];
-                      dy_neg_d = word_neg;
-                      motion_blk_d = 1'b1;
-                    end
-                    interp_pkg::ChI: begin
-                      i_d = word_value[IncWidth-1:0];
-                      i_neg_d = word_neg;
-                      motion_blk_d = 1'b1;
-                    end
-                    interp_pkg::ChJ: begin
-                      j_d = word_value[IncWidth-1:0];
-                      j_neg_d = word_neg;
-                      motion_blk_d = 1'b1;
-                    end
                     default: feed_d = word_value[FeedWidth-1:0];  // F
                   endcase
                   if (!word_ok) begin
@@ -335,10 +320,9 @@ module tape_decoder #(
                         fail_code = interp_pkg::ErrMissingFeed;
                       end else begin
                         // Prepared first (the block is cleared at the handoff): S
-                        // starts at 0; a line adds F, then doubles it k times.
+                        // starts at 0; a line adds F, then doubles it k times (k from
+                        // its first PREPARE clock on, when X and Y are in their registers).
                         state_d     = StPrepare;
-                        k_d         = bit_length(dx_d | dy_d);
-                        shifts_d    = k_d;
                         step_d      = '0;
                         step_over_d = 1'b0;
                         feed_in_d   = motion_d == interp_pkg::MotionLine;
@@ -386,8 +370,14 @@ module tape_decoder #(
         end
         if (!in_arc) begin
           feed_in_d = 1'b0;
-          if (!step_add) state_d = StHold;
-          else if (!feed_in_q) shifts_d = shifts_q - 1'b1;
+          if (!step_add) begin
+            state_d = StHold;
+          end else if (!feed_in_q) begin
+            shifts_d = shifts_q - 1'b1;
+          end else begin
+            k_d      = bit_length(dx_q | dy_q);
+            shifts_d = k_d;
+          end
         end else if (arc_done) begin
           if (arc_err) begin
             fail = 1'b1;
@@ -411,11 +401,10 @@ module tape_decoder #(
         fail_code = interp_pkg::ErrTruncatedTape;  // at the offset of the frame that never came
       end
 
-      // A block ends (an LF without motion, or the handoff): its per-block registers clear.
+      // A block ends (an LF without motion, or the handoff): its per-block registers clear
+      // (X, Y, I, J in their own always_ff below).
       if (clear_block) begin
         n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
-        dx_d = '0;  dy_d = '0;  i_d = '0;  j_d = '0;
-        dx_neg_d = 1'b0;  dy_neg_d = 1'b0;  i_neg_d = 1'b0;  j_neg_d = 1'b0;
       end
 
       if (fail) begin
@@ -424,6 +413,21 @@ module tape_decoder #(
         err_block_d  = n_d;  // includes an N committed by this frame
         err_offset_d = fail_offset;
       end
+    end
+  end
+
+  assign load_dx = word_commit && word_letter == interp_pkg::ChX;
+  assign load_dy = word_commit && word_letter == interp_pkg::ChY;
+  assign load_i  = word_commit && word_letter == interp_pkg::ChI;
+  assign load_j  = word_commit && word_letter == interp_pkg::ChJ;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni || clear_block) begin
+      {dx_neg_q, dx_q, dy_neg_q, dy_q, i_neg_q, i_q, j_neg_q, j_q} <= '0;
+    end else begin
+      if (load_dx) {dx_neg_q, dx_q} <= {word_neg, word_value[IncWidth-1:0]};
+      if (load_dy) {dy_neg_q, dy_q} <= {word_neg, word_value[IncWidth-1:0]};
+      if (load_i)  {i_neg_q, i_q}   <= {word_neg, word_value[IncWidth-1:0]};
+      if (load_j)  {j_neg_q, j_q}   <= {word_neg, word_value[IncWidth-1:0]};
     end
   end
 
@@ -446,10 +450,6 @@ module tape_decoder #(
       n_q           <= '0;
       motion_q      <= interp_pkg::MotionLine;
       feed_q        <= '0;
-      dx_q <= '0;  dx_neg_q <= 1'b0;
-      dy_q <= '0;  dy_neg_q <= 1'b0;
-      i_q  <= '0;  i_neg_q  <= 1'b0;
-      j_q  <= '0;  j_neg_q  <= 1'b0;
       k_q           <= '0;
       step_q        <= '0;
       step_over_q   <= 1'b0;
@@ -469,10 +469,6 @@ module tape_decoder #(
       n_q           <= n_d;
       motion_q      <= motion_d;
       feed_q        <= feed_d;
-      dx_q <= dx_d;  dx_neg_q <= dx_neg_d;
-      dy_q <= dy_d;  dy_neg_q <= dy_neg_d;
-      i_q  <= i_d;   i_neg_q  <= i_neg_d;
-      j_q  <= j_d;   j_neg_q  <= j_neg_d;
       k_q           <= k_d;
       step_q        <= step_d;
       step_over_q   <= step_over_d;
