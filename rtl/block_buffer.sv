@@ -15,17 +15,22 @@
 //      stay in flip-flops beside it: interp_top puts N there, which a board leaves unused,
 //      so synthesis removes N's logic (it cannot see through a RAM which of its bits are
 //      read).
+// The popped block's low PlayBits bits (interp_top puts S there, which the feed generator
+// adds every clock while the block plays) are shown on a second output, out_play_o: a
+// register loaded at the pop, or with InRam a second two-slot RAM written with the first
+// and read at the popped block's slot, so that S needs no flip-flops on the board either.
 // Timing: in_ready_o = empty (a register), so a block is taken at an edge where the
 // buffer is empty, never in the edge that empties it; pop_i empties it at that edge.
 // out_valid_o: the block can be read (and popped): from the edge after the take with the
 // register; with the RAM once the registered read shows its slot, one edge after the take
-// or after hold_i falls.
+// or after hold_i falls. out_play_o: from the edge after a pop until the next pop.
 // Golden twin: the section "Block buffer" of GoldenInterp::tick()
 // (sc_model/golden/interp_top.h), whose next_readable() is when the RAM's read shows the block.
 module block_buffer #(
   parameter int Width    = 8,
   parameter bit InRam    = 1'b0,
-  parameter int FlopBits = 1    // with InRam: 1 .. Width - 1
+  parameter int FlopBits = 1,   // with InRam: 1 .. Width - 1
+  parameter int PlayBits = 1    // 1 .. Width
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -35,13 +40,16 @@ module block_buffer #(
   input  logic             pop_i,
   input  logic             hold_i,     // with InRam: show the popped block's slot
   output logic             out_valid_o,
-  output logic [Width-1:0] out_block_o
+  output logic [Width-1:0] out_block_o,
+  // The low PlayBits bits of the block popped last (interp_top: its S).
+  output logic [PlayBits-1:0] out_play_o
 );
 
   // full_q: a block is held. block_q: the register, or the RAM's read register; shown: the
   // held block is what block_q shows (always with the register).
   logic             full_q, full_d, shown;
   logic [Width-1:0] block_q;
+  logic [PlayBits-1:0] play_q;
   logic             take;
 
   assign take = in_valid_i && !full_q;
@@ -84,10 +92,29 @@ module block_buffer #(
       if (take) block_q[Width-1:RamBits] <= in_block_i[Width-1:RamBits];
     end
     assign shown = !hold_i && shown_q == slot_q;
+    // The play RAM: the same writes; read at the slot popped last (popped_q), or at a pop
+    // at the popped block's, slot_q (a popped block is the one written last), so play_q
+    // shows it from the edge after the pop. Its reads never meet a write either: a take
+    // writes the slot that is not the popped block's.
+    (* ram_style = "block", no_rw_check *) logic [PlayBits-1:0] plays [2];
+    logic popped_q, play_slot;
+    assign play_slot = pop_i ? slot_q : popped_q;
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) popped_q <= 1'b0;
+      else         popped_q <= play_slot;
+    end
+    always_ff @(posedge clk_i) begin
+      if (take) plays[!slot_q] <= in_block_i[PlayBits-1:0];
+      play_q <= plays[play_slot];
+    end
   end else begin : g_register
     always_ff @(posedge clk_i) begin
       if (!rst_ni) block_q <= '0;
       else if (take) block_q <= in_block_i;
+    end
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) play_q <= '0;
+      else if (pop_i) play_q <= block_q[PlayBits-1:0];
     end
     assign shown = 1'b1;
     /* verilator lint_off UNUSEDSIGNAL */
@@ -99,5 +126,6 @@ module block_buffer #(
   assign in_ready_o  = !full_q;
   assign out_valid_o = full_q && shown;
   assign out_block_o = block_q;
+  assign out_play_o  = play_q;
 
 endmodule

@@ -6,8 +6,11 @@
 // reaching M issues one iteration strobe and subtracts M. So N iterations take M/F clocks,
 // rounded up (docs/interpolator.md 5.2). If S >= M the block wants more than one iteration
 // per clock: it is saturated and runs one iteration every clock instead.
-// Timing: at the load edge step_q = S, phase_q = S << LeadBits (the load clock counts as
-// the first add) and saturated_q is set; from then on, while run_i, strobe_o is
+// S comes twice: step_i at the load edge (for the phase's start and the saturation), and
+// run_step_i from the edge after it, while the block plays (the block buffer's out_play_o:
+// in block RAM on the board, so S needs no flip-flops here).
+// Timing: at the load edge phase_q = S << LeadBits (the load clock counts as the first
+// add) and saturated_q is set; from then on, while run_i, strobe_o is
 // combinational from the registers and acts in the same edge as the DDA iteration it
 // starts. LeadBits is 0 for dda_circle.sv, whose iteration is that edge. dda_serial.sv
 // (BitSerial) takes 2^LeadBits clocks per iteration and a block loads only when its
@@ -29,6 +32,11 @@ module feed_generator #(
   input  logic                    load_i,     // a block loads at this edge
   input  logic [StepWidth-1:0]    step_i,     // its S = F * N, modulo 2^StepWidth
   input  logic                    step_over_i, // S >= 2^StepWidth: saturated whatever M
+  // S of the playing block (after its load edge); only its low ModulusWidth - LeadBits
+  // bits are read: a block with any higher bit set is saturated.
+  /* verilator lint_off UNUSEDSIGNAL */
+  input  logic [StepWidth-1:0]    run_step_i,
+  /* verilator lint_on UNUSEDSIGNAL */
   input  logic                    run_i,      // the playing block has iterations left
   input  logic [ModulusWidth-1:0] modulus_i,  // feed_modulus_i (static)
   output logic                    strobe_o,   // one DDA iteration at this edge
@@ -50,10 +58,8 @@ module feed_generator #(
   // register with a constant input and no reset value, which synthesis replaces by the
   // constant, and the compares with M fold.
   logic [ModulusWidth-1:0] modulus_q;
-  // step_q: S of the playing block (its low bits: all of it when not saturated).
   // phase_q: accumulated feed, always < M when not saturated. saturated_q: S << LeadBits
   // >= M, one iteration per clock.
-  logic [RunStepWidth-1:0] step_q, step_d;
   logic [PhaseWidth-1:0] phase_q, phase_d;
   logic                  saturated_q, saturated_d;
 
@@ -69,11 +75,9 @@ module feed_generator #(
     sum         = 'x;  // used only while running unsaturated
     {borrow, over, reached} = 'x;
     strobe_o    = 1'b0;
-    step_d      = step_q;
     phase_d     = phase_q;
     saturated_d = saturated_q;
     if (load_i) begin
-      step_d      = RunStepWidth'(step_i);
       phase_d     = PhaseWidth'(lead_step);
       saturated_d = step_over_i || lead_step >= CmpWidth'(modulus_q);
     end else if (run_i) begin
@@ -81,7 +85,8 @@ module feed_generator #(
         strobe_o = 1'b1;
       end else begin
         // One subtraction gives both the compare (no borrow: sum >= M) and sum - M.
-        sum            = phase_q + PhaseWidth'(step_q);
+        // Unsaturated, S < 2^RunStepWidth: its low bits are all of it.
+        sum            = phase_q + PhaseWidth'(RunStepWidth'(run_step_i));
         {borrow, over} = {1'b0, sum} - {1'b0, modulus};
         reached        = !borrow;
         strobe_o = reached;
@@ -93,11 +98,9 @@ module feed_generator #(
   always_ff @(posedge clk_i) begin
     modulus_q <= modulus_i;
     if (!rst_ni) begin
-      step_q      <= '0;
       phase_q     <= '0;
       saturated_q <= 1'b0;
     end else begin
-      step_q      <= step_d;
       phase_q     <= phase_d;
       saturated_q <= saturated_d;
     end

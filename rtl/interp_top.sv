@@ -78,7 +78,8 @@ module interp_top #(
   localparam int StepWidth = ExactStepWidth < ModulusWidth - LeadBits + 1 ? ExactStepWidth
                                                                           : ModulusWidth - LeadBits + 1;
   // A decoded block as the buffer stores it: N, motion, dx, dy (sign + magnitude), |i|, |j|
-  // (the arc's start about its centre), S, k, and for an arc the growth of |x| and |y|.
+  // (the arc's start about its centre), k, for an arc the growth of |x| and |y|, and S
+  // (last: the buffer shows the low bits of the playing block to the feed generator).
   // The codes are interp_pkg's; the struct is declared here because its widths are this
   // module's parameters (0_interp_pkg.sv explains why a package cannot hold it).
   typedef struct packed {
@@ -90,11 +91,11 @@ module interp_top #(
     logic [IncWidth-1:0]  dy;
     logic [IncWidth-1:0]  i;
     logic [IncWidth-1:0]  j;
-    logic [StepWidth-1:0] step;
     logic                 step_over;  // S >= 2^StepWidth
     logic [KWidth-1:0]    k;
     logic                 grow_x;
     logic                 grow_y;
+    logic [StepWidth-1:0] step;
   } block_t;
 
   // Decoder -> buffer.
@@ -127,7 +128,7 @@ module interp_top #(
   logic [IncWidth-1:0]    next_dx, next_dy, next_i, next_j;
   logic                   next_dx_neg, next_dy_neg;
   logic [1:0]             next_motion;
-  logic [StepWidth-1:0]   next_step;
+  logic [StepWidth-1:0]   next_step, play_step;  // S of the next block, of the playing one
   logic                   next_step_over;
   logic [KWidth-1:0]      next_k;
   logic                   next_grow_x, next_grow_y, next_arc;
@@ -176,12 +177,13 @@ module interp_top #(
 
   // With BitSerial the buffer is a block RAM, but N (the first field: the top bits) stays in
   // flip-flops, so a board that leaves block_n_o unused loses its logic (block_buffer.sv).
-  block_buffer #(.Width(BlockWidth), .InRam(BitSerial), .FlopBits(SeqWidth)) u_buffer (
+  block_buffer #(.Width(BlockWidth), .InRam(BitSerial), .FlopBits(SeqWidth),
+                 .PlayBits(StepWidth)) u_buffer (
     .clk_i, .rst_ni,
     .in_valid_i(dec_valid), .in_ready_o(buf_ready),
     .in_block_i(dec_block),
     .pop_i(load), .hold_i(words),
-    .out_valid_o(next_valid), .out_block_o(next_block)
+    .out_valid_o(next_valid), .out_block_o(next_block), .out_play_o(play_step)
   );
 
   assign next_n      = next_block.n;
@@ -205,7 +207,7 @@ module interp_top #(
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits))
   u_feed (
     .clk_i, .rst_ni,
-    .load_i(load), .step_i(next_step), .step_over_i(next_step_over),
+    .load_i(load), .step_i(next_step), .step_over_i(next_step_over), .run_step_i(play_step),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
   );

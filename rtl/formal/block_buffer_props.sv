@@ -9,7 +9,9 @@
 // - ap_ready: ready = empty (never taken in the edge that empties it);
 // - ap_popped: a pop empties the buffer;
 // - ap_words (InRam): while hold_i, the popped block's RAM part is still what out_block
-//   shows (the bit-serial player reads its words from there), and no block is valid.
+//   shows (the bit-serial player reads its words from there), and no block is valid;
+// - ap_play: from the edge after a pop, out_play shows the popped block's low bits (the
+//   feed generator's S).
 // Environment: reset in the first clock; the producer may offer anything at any time; pop
 // only while a block is valid (interp_top loads only a valid block); hold_i rises only at
 // a pop and, once it falls, stays low until the next one (the player's words_o). The
@@ -30,10 +32,11 @@ module block_buffer_props #(
 
   logic         in_ready, out_valid;
   logic [B-1:0] out_block;
+  logic [B-2:0] out_play;
 
-  block_buffer #(.Width(B), .InRam(InRam), .FlopBits(1)) u_dut (
+  block_buffer #(.Width(B), .InRam(InRam), .FlopBits(1), .PlayBits(B - 1)) u_dut (
     .clk_i, .rst_ni, .in_valid_i, .in_ready_o(in_ready), .in_block_i, .pop_i, .hold_i,
-    .out_valid_o(out_valid), .out_block_o(out_block)
+    .out_valid_o(out_valid), .out_block_o(out_block), .out_play_o(out_play)
   );
 
   // The model queue: f_full_q holds f_block_q. f_unshown_q: with the RAM, its read register
@@ -41,7 +44,7 @@ module block_buffer_props #(
   // popped block was held). f_popped_q: the block popped last; f_may_hold_q: hold_i may be
   // high (it has been since that pop).
   logic         f_init = 1'b1;
-  logic         f_full_q, f_unshown_q, f_may_hold_q;
+  logic         f_full_q, f_unshown_q, f_may_hold_q, f_played_q;
   logic [B-1:0] f_block_q, f_popped_q;
 
   always_ff @(posedge clk_i) begin
@@ -53,10 +56,12 @@ module block_buffer_props #(
       f_block_q <= '0;
       f_popped_q <= '0;
       f_may_hold_q <= 1'b0;
+      f_played_q <= 1'b0;
     end else if (f_full_q) begin
       if (pop_i) begin
         f_full_q <= 1'b0;
         f_popped_q <= f_block_q;
+        f_played_q <= 1'b1;
       end
     end else if (in_valid_i) begin
       f_full_q <= 1'b1;
@@ -77,6 +82,7 @@ module block_buffer_props #(
       ap_taken: assert (out_valid == (f_full_q && !(InRam && (f_unshown_q || hold_i))));
       if (out_valid) ap_held: assert (out_block == f_block_q);
       if (InRam && hold_i) ap_words: assert (out_block[B-2:0] == f_popped_q[B-2:0]);
+      if (f_played_q) ap_play: assert (out_play == f_popped_q[B-2:0]);
     end
   end
 
