@@ -38,6 +38,8 @@ module arc_geometry #(
   output logic [IncWidth-1:0] y1_o,
   output logic                grow_x_o,  // |x| grows along the arc
   output logic                grow_y_o,
+  output logic                add_x_o,   // |x1| = |x0| + |dx| (else |x0| - |dx|)
+  output logic                add_y_o,
   output logic [KWidth-1:0]   k_o,
   output logic                error_o,
   output logic [3:0]          error_code_o
@@ -48,7 +50,7 @@ module arc_geometry #(
   // negative), move d (d_pos). Result {plus, minus, end_mag, grow, too_wide}: the signs of
   // the start and the end as votes for the quadrant's sign, the end's magnitude, whether it
   // grows and whether it overflows the register.
-  localparam int AxisWidth = IncWidth + 4;
+  localparam int AxisWidth = IncWidth + 5;
   function automatic logic [AxisWidth-1:0] axis(input logic [IncWidth-1:0] s, input logic s_pos,
                                                 input logic [IncWidth-1:0] d, input logic d_pos);
     logic              s_zero, d_zero, away, end_pos, end_zero;
@@ -64,27 +66,30 @@ module arc_geometry #(
     end_pos  = away ? (s_zero ? d_pos : s_pos) : (r[IncWidth] ? d_pos : s_pos);
     axis = {(!s_zero && s_pos) || (!end_zero && end_pos),
             (!s_zero && !s_pos) || (!end_zero && !end_pos),
-            r[IncWidth-1:0], away && !d_zero, away && r[IncWidth]};
+            r[IncWidth-1:0], away && !d_zero, away && r[IncWidth], away};
   endfunction
 
-  logic                ax_plus, ax_minus, ax_grow, ax_too_wide;
-  logic                ay_plus, ay_minus, ay_grow, ay_too_wide;
+  logic                ax_plus, ax_minus, ax_grow, ax_too_wide, ax_add;
+  logic                ay_plus, ay_minus, ay_grow, ay_too_wide, ay_add;
   logic [IncWidth-1:0] ax_end, ay_end;
   logic  dx_plus, dx_minus, dy_plus, dy_minus, moves, in_quadrant;
   logic [IncWidth-1:0] all_bits;
 
   always_comb begin
-    {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide} = 'x;
-    {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide} = 'x;
+    {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide, ax_add} = 'x;
+    {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide, ay_add} = 'x;
     {dx_plus, dx_minus, dy_plus, dy_minus, moves, in_quadrant} = 'x;
     all_bits = 'x;
     x0_o = 'x;  y0_o = 'x;  x1_o = 'x;  y1_o = 'x;  grow_x_o = 1'bx;  grow_y_o = 1'bx;
+    add_x_o = 1'bx;  add_y_o = 1'bx;
     k_o = 'x;
     error_o = 1'bx;
     error_code_o = interp_pkg::ErrArcZeroRadius;
     if (enable_i) begin
-      {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide} = axis(i_i, i_neg_i, dx_i, !dx_neg_i);
-      {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide} = axis(j_i, j_neg_i, dy_i, !dy_neg_i);
+      {ax_plus, ax_minus, ax_end, ax_grow, ax_too_wide, ax_add} =
+          axis(i_i, i_neg_i, dx_i, !dx_neg_i);
+      {ay_plus, ay_minus, ay_end, ay_grow, ay_too_wide, ay_add} =
+          axis(j_i, j_neg_i, dy_i, !dy_neg_i);
       dx_plus  = dx_i != '0 && !dx_neg_i;
       dx_minus = dx_i != '0 && dx_neg_i;
       dy_plus  = dy_i != '0 && !dy_neg_i;
@@ -115,6 +120,8 @@ module arc_geometry #(
       y1_o     = ay_end;
       grow_x_o = ax_grow;
       grow_y_o = ay_grow;
+      add_x_o  = ax_add;
+      add_y_o  = ay_add;
       // k: position of the highest 1 of any magnitude, plus one (a priority encoder).
       all_bits = i_i | j_i | ax_end | ay_end;
       for (int b = 0; b < IncWidth; b++) begin

@@ -38,6 +38,9 @@ module arc_prepare #(
   output logic                 err_o,       // ... and it is an error
   output logic [3:0]           err_code_o,
   output logic                 iterate_o,   // a dry-run iteration at this edge
+  // The magnitudes of I, J, X, Y turn one place at this edge (the decoder's registers, bit
+  // 0 first): the radius check and the dry run read them one bit per clock.
+  output logic                 shift_o,
   // The arc's geometry for the player's circle DDA (valid in clocks with run_i).
   output logic [KWidth-1:0]    k_o,
   output logic                 grow_x_o,
@@ -49,11 +52,16 @@ module arc_prepare #(
   logic                 running_q, running_d;
 
   logic                start;
+  // |x0|, |y0|: the parallel dry run reads them whole, the radius check and the serial dry
+  // run bit 0 of the turning words. |x1|, |y1| in parallel serve the geometry's checks only:
+  // the radius check forms them serially.
+  /* verilator lint_off UNUSEDSIGNAL */
   logic [IncWidth-1:0] x0, y0, x1, y1;
-  logic                grow_x, grow_y, geo_err;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic                grow_x, grow_y, geo_err, add_x, add_y;
   logic [3:0]          geo_code;
   logic [KWidth-1:0]   k;
-  logic                dry_iterate, dry_done, check_done, check_ok;
+  logic                dry_iterate, dry_done, check_done, check_ok, check_shift;
 
   assign start = run_i && !running_q;
 
@@ -61,6 +69,7 @@ module arc_prepare #(
     .enable_i(run_i),
     .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
     .x0_o(x0), .y0_o(y0), .x1_o(x1), .y1_o(y1), .grow_x_o(grow_x), .grow_y_o(grow_y),
+    .add_x_o(add_x), .add_y_o(add_y),
     .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
   );
 
@@ -68,11 +77,16 @@ module arc_prepare #(
     // The dry run emits no pulses and has no direction; the held block's words stay.
     /* verilator lint_off UNUSEDSIGNAL */
     logic dry_carry_x, dry_carry_y, dry_step_x, dry_step_y, dry_dir_x, dry_dir_y, dry_words;
+    logic [$clog2(IncWidth)-1:0] dry_bit;
     /* verilator lint_on UNUSEDSIGNAL */
+    // The dry run's first pass is the radius check's first: the words turn (shift_o) in
+    // its clocks 0 .. W - 1 and show bit i at bit 0.
     dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
       .clk_i, .rst_ni,
-      .load_i(start), .line_i(1'b0), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i),
-      .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
+      .load_i(start), .line_i(1'b0), .k_i(k), .x_bit_i(shift_o && x0[0]),
+      .y_bit_i(shift_o && y0[0]), .cnt_x_bit_i(shift_o && dx_i[0]),
+      .cnt_y_bit_i(shift_o && dy_i[0]), .cnt_y_i(dy_i), .bit_o(dry_bit),
+      .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
       .strobe_i(running_q), .iterate_o(dry_iterate),
       .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),
       .dir_x_o(dry_dir_x), .step_y_o(dry_step_y), .dir_y_o(dry_dir_y),
@@ -98,7 +112,8 @@ module arc_prepare #(
 
   arc_radius_check #(.IncWidth(IncWidth)) u_radius (
     .clk_i, .rst_ni, .start_i(start),
-    .x0_i(x0), .y0_i(y0), .x1_i(x1), .y1_i(y1),
+    .x0_bit_i(x0[0]), .y0_bit_i(y0[0]), .dx_bit_i(dx_i[0]), .dy_bit_i(dy_i[0]),
+    .add_x_i(add_x), .add_y_i(add_y), .shift_o(check_shift),
     .done_o(check_done), .ok_o(check_ok)
   );
 
@@ -134,6 +149,9 @@ module arc_prepare #(
     end
   end
 
+  // The words turn only while the arc is prepared: after a geometric error at the start edge
+  // the check runs on unseen (the decoder has stopped).
+  assign shift_o  = check_shift && running_q;
   assign k_o      = k;
   assign grow_x_o = grow_x;
   assign grow_y_o = grow_y;

@@ -10,7 +10,13 @@
 // the accumulator goes once round through the adder, LSB first, and is back in place. Pass
 // b of a square adds v * v[b] << b: at clock i of the pass the addend bit is
 // v[b] & v[i - b] (0 outside v). So every product is a sum of shifted copies, and the
-// multiplicands (the held block's magnitudes, from arc_geometry) are read one bit per clock.
+// operands are read one bit per clock with no multiplexer: in pass b the decoder's words
+// (|I| = x0, |J| = y0, |X|, |Y|) turn one place at each of the clocks b .. b + W - 1
+// (shift_o), so bit 0 shows v[i - b] there and they are back in place at the pass's end;
+// x1 = x0 +- |X| and y1 come from a serial adder on those bits (add_*_i: the geometry's
+// sum or difference), restarted at clock b; |E| turns in e_q the same way in Sq (clocks
+// b .. b + W + 1). The multiplier bit v[b] is caught the pass before, at its clock 2b - 1
+// where v[b] passes (mul_next_q), and for pass 0 at clock 0 (mul_q).
 // Schedule ((5W + 4) passes of 2W + 4 clocks after start_i; 3024 clocks at W = 16):
 //   SumA  2W passes  acc += x0 x0[b] << b, b = 0 .. W-1, then acc += y0 y0[b] << b: acc = A
 //   Copy  1 pass     a = acc, acc = ~acc = -A - 1
@@ -20,7 +26,8 @@
 //   Sq    W+2 passes acc += e e[b] << b: acc = |E|^2; each pass also compares acc <= 4A
 //                    LSB first (4A's bit i is a's bit i - 2), the last pass's verdict counts
 //   Done             ok_o = !far && acc <= 4A (|E| >= 2^(W+2) fails: 4A < 2^(2W+3))
-// The operands must stay constant from the start edge to done (the decoder's held block).
+// The words must hold from the start edge to done but for the turns (the decoder's held
+// block); the dry run (arc_prepare.sv) reads its first pass from the same turns (pass 0).
 // The two circulating registers, acc and 4A, are one L x 2-bit memory, bit i of each at
 // address i (`bits`; a block RAM on the iCE40, so their 2L bits need no logic cells):
 // clock i of a pass reads bit i (the memory's registered read, addressed at clock i - 1)
@@ -34,10 +41,16 @@ module arc_radius_check #(
   input  logic                clk_i,
   input  logic                rst_ni,
   input  logic                start_i,
-  input  logic [IncWidth-1:0] x0_i,
-  input  logic [IncWidth-1:0] y0_i,
-  input  logic [IncWidth-1:0] x1_i,
-  input  logic [IncWidth-1:0] y1_i,
+  // The words' bits of this clock (bit 0 of the decoder's I, J, X, Y magnitudes, which
+  // turn one place at each edge with shift_o), and whether |x1| = |x0| + |dx| (else - |dx|)
+  // and |y1| = |y0| + |dy|.
+  input  logic                x0_bit_i,
+  input  logic                y0_bit_i,
+  input  logic                dx_bit_i,
+  input  logic                dy_bit_i,
+  input  logic                add_x_i,
+  input  logic                add_y_i,
+  output logic                shift_o,
   output logic                done_o,
   output logic                ok_o
 );
@@ -66,7 +79,7 @@ module arc_radius_check #(
   logic                   second_q, first_pass_q;
   (* no_rw_check *) logic [1:0] bits [SqWidth];  // never read and written at one address
   logic [1:0]             read_q, cur, next, acc2_q;
-  logic                   carry_q;
+  logic                   carry_q, end_carry_q, mul_q, mul_next_q;
   logic [EWidth-1:0]      e_q;
   logic                   far_q, neg_q, le_q;
 
@@ -74,10 +87,10 @@ module arc_radius_check #(
   // first clock).
   logic                  active, first_bit, last_bit, invert, carry_in0, addend, cin, sum, cout;
   logic                  four_a_bit, le_d;
-  logic [IncWidth-1:0]   v;        // the squared operand of a sum pass
-  logic [EWidth-1:0]     u;        // ... widened, or e in Sq
   logic [BitWidth-1:0]   offset;   // i - b: the bit of u that pass b adds at clock i
   logic                  in_range; // 0 <= i - b < W + 2
+  logic                  in_word;  // 0 <= i - b < W
+  logic                  w_bit, d_bit, add, end_cin, end_sum, end_cout, op_bit, mul;
 
   // The registers change only at the start and while the check runs; the other clocks
   // evaluate nothing here (a fast verilated model).
@@ -89,17 +102,30 @@ module arc_radius_check #(
 
   always_comb begin
     // Used only while the check runs: don't-care ('x) otherwise.
-    {v, u, offset, in_range, invert, carry_in0, addend, cin, sum, cout, four_a_bit,
-     le_d, next} = 'x;
+    {offset, in_range, invert, carry_in0, addend, cin, sum, cout, four_a_bit,
+     le_d, next, w_bit, d_bit, add, end_cin, end_sum, end_cout, op_bit, mul} = 'x;
+    in_word = 1'b0;
     if (active && !start_i) begin
-      v = phase_q == SumA ? (second_q ? y0_i : x0_i) : (second_q ? y1_i : x1_i);
-      u = phase_q == Sq ? e_q : {2'b00, v};
       offset   = bit_q - BitWidth'(pass_q);
       in_range = bit_q >= BitWidth'(pass_q) && offset < BitWidth'(EWidth);
+      in_word  = bit_q >= BitWidth'(pass_q) && offset < BitWidth'(IncWidth) &&
+                 (phase_q == SumA || phase_q == SumB);
+      // The operand's bit i - b: x0 or y0 as it comes; x1 or y1 from a serial adder
+      // (|x0| + |dx|, or |x0| + ~|dx| + 1), restarted at the window's first clock; |E| from
+      // e_q, which turns in its window in Sq.
+      w_bit   = second_q ? y0_bit_i : x0_bit_i;
+      d_bit   = second_q ? dy_bit_i : dx_bit_i;
+      add     = second_q ? add_y_i : add_x_i;
+      end_cin = offset == '0 ? !add : end_carry_q;
+      {end_cout, end_sum} = {1'b0, w_bit} + {1'b0, d_bit ^ !add} + {1'b0, end_cin};
+      op_bit  = phase_q == Sq ? in_range && e_q[0]
+                              : in_word && (phase_q == SumA ? w_bit : end_sum);
+      // The multiplier bit u[b]: caught by the pass before (at i - b = b + 1), or at pass
+      // 0 the operand's bit 0, at its clock 0 and held after.
+      mul       = pass_q == '0 && first_bit ? op_bit : mul_q;
       invert    = phase_q == Copy || (phase_q == Abs && neg_q);
       carry_in0 = phase_q == Abs && neg_q;
-      addend    = (phase_q == SumA || phase_q == SumB || phase_q == Sq) && u[pass_q] &&
-                  in_range && u[offset[PassWidth-1:0]];
+      addend    = (phase_q == SumA || phase_q == SumB || phase_q == Sq) && mul && op_bit;
       cin       = first_bit ? carry_in0 : carry_q;
       {cout, sum} = {1'b0, cur[Acc] ^ invert} + {1'b0, addend} + {1'b0, cin};
       // acc <= 4A, LSB first (in Sq).
@@ -122,6 +148,9 @@ module arc_radius_check #(
       first_pass_q <= 1'b0;
       acc2_q   <= '0;
       carry_q  <= 1'b0;
+      end_carry_q <= 1'b0;
+      mul_q    <= 1'b0;
+      mul_next_q <= 1'b0;
       e_q      <= '0;
       far_q    <= 1'b0;
       neg_q    <= 1'b0;
@@ -139,6 +168,10 @@ module arc_radius_check #(
       carry_q <= cout;
       acc2_q  <= {acc2_q[0], cur[Acc]};
       if (last_bit) first_pass_q <= 1'b0;
+      end_carry_q <= end_cout;
+      if (pass_q == '0 && first_bit) mul_q <= op_bit;
+      if ({1'b0, offset} == {1'b0, pass_q} + 1'b1) mul_next_q <= op_bit;
+      if (last_bit) mul_q <= mul_next_q;
       unique case (phase_q)
         SumA, SumB: begin
           // E's sign: its top bit, the last written by SumB.
@@ -161,6 +194,7 @@ module arc_radius_check #(
           if (last_bit) phase_q <= Sq;
         end
         Sq: begin
+          if (in_range) e_q <= {e_q[0], e_q[EWidth-1:1]};
           le_q <= le_d;
           if (last_bit) begin
             pass_q <= pass_q + 1'b1;
@@ -180,6 +214,7 @@ module arc_radius_check #(
     end
   end
 
+  assign shift_o = in_word;
   assign done_o = phase_q == Done;
   assign ok_o   = !far_q && le_q;
 

@@ -25,13 +25,16 @@
 // iteration ends. A line integrates both axes in the first pass (acc_X on the acc adder,
 // acc_Y on the mag adder: its magnitudes never move) and counts its 2^k iterations down in
 // cnt_X's place; the second pass leaves its words as they are.
-// Timing: load_i takes the block's k, line, growth and directions at an edge; its words
-// (x_i, y_i, cnt_*_i) are read bit by bit in the block's first pass, so they must hold
-// until words_o falls. An iteration starts at an edge with strobe_i when the DDA is idle
-// and the block not done (iterate_o): that edge is clock 0 of its first pass; its pulses
-// show after edge k - 1 (a line) or P + k - 1 (an arc), and the iteration ends at edge
-// 2P - 1, after which done_o is high if it was the block's last. A strobe while an iteration runs is ignored: the feed generator never sends one
-// then (feed_generator.sv, LeadBits).
+// Timing: load_i takes the block's k, line, growth and directions (and |dy| whole, for its
+// 0 and 1 flags) at an edge; its words come bit by bit in the block's first pass, bit
+// bit_o of each on the *_bit_i inputs in that clock: the player's multiplexers pick them
+// from the buffered block (interp_top.sv), which must hold until words_o falls; the dry
+// run's come from the decoder's words, which turn (arc_prepare.sv). An iteration starts
+// at an edge with strobe_i when the DDA is idle and the block not done (iterate_o): that
+// edge is clock 0 of its first pass; its pulses show after edge k - 1 (a line) or
+// P + k - 1 (an arc), and the iteration ends at edge 2P - 1, after which done_o is high if
+// it was the block's last. A strobe while an iteration runs is ignored: the feed generator
+// never sends one then (feed_generator.sv, LeadBits).
 module dda_serial #(
   parameter int IncWidth = 16,   // >= 2
   parameter int KWidth   = $clog2(IncWidth + 1)
@@ -41,10 +44,15 @@ module dda_serial #(
   input  logic                load_i,     // a block loads at this edge
   input  logic                line_i,     // the loading block is a line (else an arc)
   input  logic [KWidth-1:0]   k_i,
-  input  logic [IncWidth-1:0] x_i,        // |x| of the start, relative to the centre (arc)
-  input  logic [IncWidth-1:0] y_i,        // |y| of the start (arc)
-  input  logic [IncWidth-1:0] cnt_x_i,    // |dx|: X pulses of the block
-  input  logic [IncWidth-1:0] cnt_y_i,    // |dy|
+  // The block's words, one bit per clock in its first pass: bit bit_o (0 from bit
+  // IncWidth on) of |x| and |y| of the start relative to the centre (arc), |dx| and |dy|
+  // (the X and Y pulses of the block); |dy| whole at the load edge too (its 0 and 1 flags).
+  input  logic                x_bit_i,
+  input  logic                y_bit_i,
+  input  logic                cnt_x_bit_i,
+  input  logic                cnt_y_bit_i,
+  input  logic [IncWidth-1:0] cnt_y_i,
+  output logic [$clog2(IncWidth)-1:0] bit_o,
   input  logic                grow_x_i,   // |x| grows along the arc (arc)
   input  logic                grow_y_i,
   input  logic                dir_x_i,    // 1 = plus
@@ -111,21 +119,16 @@ module dda_serial #(
   // starts at 2^(k-1) (rounding to nearest), whose bit i is 1 at i = k - 1 only; a line's
   // magnitude places hold the other axis's |d| (each integrator adds the other place, as
   // in dda_circle.sv) and its iterations left start at 2^k - 1 (the bits below k).
-  function automatic logic word_bit(input logic [IncWidth-1:0] word, input logic [BitWidth-1:0] i);
-    word_bit = 32'(i) < IncWidth ? word[i] : 1'b0;
-  endfunction
-  // (The line/arc choice is made on the selected bits, not on the words: one multiplexer,
-  // not W.)
   logic cnt_x_bit, cnt_y_bit;
-  assign cnt_x_bit = word_bit(cnt_x_i, bit_q);
-  assign cnt_y_bit = word_bit(cnt_y_i, bit_q);
+  assign cnt_x_bit = cnt_x_bit_i;
+  assign cnt_y_bit = cnt_y_bit_i;
   always_comb begin
     cur = read_q;
     if (words_q) begin
       cur[AccX] = top_bit;
       cur[AccY] = top_bit;
-      cur[MagX] = line_q ? cnt_y_bit : word_bit(x_i, bit_q);
-      cur[MagY] = line_q ? cnt_x_bit : word_bit(y_i, bit_q);
+      cur[MagX] = line_q ? cnt_y_bit : x_bit_i;
+      cur[MagY] = line_q ? cnt_x_bit : y_bit_i;
       cur[CntX] = line_q ? below_k : cnt_x_bit;
       cur[CntY] = cnt_y_bit;
     end
@@ -280,6 +283,7 @@ module dda_serial #(
   assign dir_x_o  = dir_x_q;
   assign dir_y_o  = dir_y_q;
   assign words_o  = words_q;
+  assign bit_o    = bit_q;
   assign done_o   = done_q;
 
 endmodule

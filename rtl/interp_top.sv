@@ -236,10 +236,18 @@ module interp_top #(
     /* verilator lint_on UNUSEDSIGNAL */
     assign unused_circle = {circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x,
                             circle_step_y, circle_dir_y, circle_done};
+    // The DDA reads the buffered words one bit per clock in its first pass (bit_q).
+    logic [$clog2(IncWidth)-1:0] bit_q;
+    function automatic logic word_bit(input logic [IncWidth-1:0] word,
+                                      input logic [$clog2(IncWidth)-1:0] i);
+      word_bit = 32'(i) < IncWidth ? word[i] : 1'b0;
+    endfunction
     dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth)) u_serial (
       .clk_i, .rst_ni,
-      .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_i(next_i), .y_i(next_j),
-      .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
+      .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_bit_i(word_bit(next_i, bit_q)),
+      .y_bit_i(word_bit(next_j, bit_q)), .cnt_x_bit_i(word_bit(next_dx, bit_q)),
+      .cnt_y_bit_i(word_bit(next_dy, bit_q)), .cnt_y_i(next_dy), .bit_o(bit_q),
+      .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
       .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
       .strobe_i(strobe), .iterate_o(iterate),
       .carry_x_o(carry_x), .carry_y_o(carry_y),

@@ -170,7 +170,7 @@ module tape_decoder #(
   // with arc_done, and arc_iterate marks its dry run's iterations. preparing and in_arc are
   // their own signals because Icarus 11 mistypes an enum literal used in a port connection.
   logic                   preparing, in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
-  logic                   arc_iterate;
+  logic                   arc_iterate, arc_shift;
   logic [3:0]             arc_code;
   logic [KWidth-1:0]      arc_k;
 
@@ -423,6 +423,12 @@ module tape_decoder #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni || clear_block) begin
       {dx_neg_q, dx_q, dy_neg_q, dy_q, i_neg_q, i_q, j_neg_q, j_q} <= '0;
+    end else if (arc_shift) begin
+      // An arc's check and dry run read the magnitudes one bit per clock (arc_prepare.sv).
+      dx_q <= {dx_q[0], dx_q[IncWidth-1:1]};
+      dy_q <= {dy_q[0], dy_q[IncWidth-1:1]};
+      i_q  <= {i_q[0], i_q[IncWidth-1:1]};
+      j_q  <= {j_q[0], j_q[IncWidth-1:1]};
     end else begin
       if (load_dx) {dx_neg_q, dx_q} <= {word_neg, word_value[IncWidth-1:0]};
       if (load_dy) {dy_neg_q, dy_q} <= {word_neg, word_value[IncWidth-1:0]};
@@ -439,6 +445,7 @@ module tape_decoder #(
     .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
     .ccw_i(motion_q == interp_pkg::MotionArcCcw),
     .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .iterate_o(arc_iterate),
+    .shift_o(arc_shift),
     .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
   );
 

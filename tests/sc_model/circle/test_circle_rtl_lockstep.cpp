@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <random>
+#include <type_traits>
 #include <sstream>
 
 #include "Varc_prepare.h"
@@ -88,10 +89,16 @@ TEST(CircleRtlLockstep, DdaCircleEqualsGoldenEveryClock) {
 }
 
 // Runs one block through a verilated arc_prepare and ArcPrepare: idle clocks, run until
-// done, idle again; compares done, error, code and the iteration mark every clock.
+// done, idle again; compares done, error, code and the iteration mark every clock. The
+// magnitudes turn one place at each edge with shift_o, as the decoder's registers do (the
+// radius check and the dry run read them one bit per clock), and must be back in place
+// when the preparation is done.
 template <typename Model>
 ::testing::AssertionResult prepare_lockstep(Model& m, ArcPrepare& golden, const ArcWords& w,
-                                            std::mt19937_64& rng) {
+                                            unsigned width, std::mt19937_64& rng) {
+  const auto turn = [width](auto& v) {
+    v = static_cast<std::remove_reference_t<decltype(v)>>((v >> 1) | ((v & 1u) << (width - 1)));
+  };
   m.dx_i = w.dx;
   m.dx_neg_i = w.dx_neg;
   m.dy_i = w.dy;
@@ -126,7 +133,18 @@ template <typename Model>
                                            << int(expect.error);
     if (m.iterate_o != expect.iterate)
       return ::testing::AssertionFailure() << where.str() << "iterate_o RTL " << int(m.iterate_o);
+    if (expect.done && (m.dx_i != w.dx || m.dy_i != w.dy || m.i_i != w.i || m.j_i != w.j))
+      return ::testing::AssertionFailure() << where.str() << "the words are not in place";
+    const bool shift = m.shift_o;
+    if (shift && !run)
+      return ::testing::AssertionFailure() << where.str() << "shift_o while not running";
     clock_edge(m);
+    if (shift) {
+      turn(m.dx_i);
+      turn(m.dy_i);
+      turn(m.i_i);
+      turn(m.j_i);
+    }
     if (expect.done) done = true;
     if (done) --idle_after;
   }
@@ -151,7 +169,7 @@ void arc_prepare_lockstep_w16(bool serial, int64_t max_radius) {
     const ArcWords w = a.words();
     if (w.dx > 65535 || w.dy > 65535) continue;
     good += check_arc(w, 16) == TapeError::kNone;
-    ASSERT_TRUE(prepare_lockstep(m, golden, w, rng));
+    ASSERT_TRUE(prepare_lockstep(m, golden, w, 16, rng));
   }
   EXPECT_GT(good, 150);
 }
@@ -183,7 +201,7 @@ void arc_prepare_lockstep_w6(bool serial) {
       if (t % 100 == 0) w.i = w.j = 0;
     }
     ++codes[static_cast<int>(check_arc(w, 6))];
-    ASSERT_TRUE(prepare_lockstep(m, golden, w, rng));
+    ASSERT_TRUE(prepare_lockstep(m, golden, w, 6, rng));
   }
   // Every verdict occurred.
   for (TapeError e : {TapeError::kNone, TapeError::kValueTooWide, TapeError::kArcCrossesQuadrant,

@@ -3,8 +3,10 @@
 // ones at W = 6 (passes longer than W) and W = 16, under random iteration strobes. The twin
 // computes each iteration with CircleDda, the parallel DDA's integers, so this checks the
 // RTL's bit-level arithmetic against an independent model: the iteration count, every
-// pulse and its clock, the end, and when the block's words may go. The words are scrambled
-// once words_o falls, so a DDA that still read them would differ.
+// pulse and its clock, the end, and when the block's words may go. The words come one bit
+// per clock, the bit the DDA asks for (bit_o), as the player's multiplexers and the
+// decoder's turning registers give them; they are scrambled once words_o falls, so a DDA
+// that still read them would differ.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -70,12 +72,20 @@ Block line_block(int64_t dx, int64_t dy, std::mt19937_64& rng) {
   return b;
 }
 
+// The words' bits of this clock: bit bit_o of each (0 from bit w on), and |dy| whole.
+struct Words {
+  uint32_t x = 0, y = 0, cnt_x = 0, cnt_y = 0;
+};
+
 template <typename Model>
-void set_words(Model& m, const Block& b, uint32_t mask) {
-  m.x_i = b.x & mask;
-  m.y_i = b.y & mask;
-  m.cnt_x_i = b.cnt_x & mask;
-  m.cnt_y_i = b.cnt_y & mask;
+void drive_words(Model& m, const Words& v, unsigned w) {
+  const unsigned bit = m.bit_o;
+  const auto at = [&](uint32_t word) { return bit < w && ((word >> bit) & 1u); };
+  m.x_bit_i = at(v.x);
+  m.y_bit_i = at(v.y);
+  m.cnt_x_bit_i = at(v.cnt_x);
+  m.cnt_y_bit_i = at(v.cnt_y);
+  m.cnt_y_i = v.cnt_y;
 }
 
 // Loads one block into the verilated DDA and its twin and plays it to its end with strobes
@@ -95,7 +105,8 @@ template <typename Model>
   m.load_i = 1;
   m.line_i = b.line;
   m.k_i = static_cast<uint8_t>(b.k);
-  set_words(m, b, mask);
+  Words words{b.x & mask, b.y & mask, b.cnt_x & mask, b.cnt_y & mask};
+  drive_words(m, words, w);
   m.grow_x_i = b.grow_x;
   m.grow_y_i = b.grow_y;
   m.dir_x_i = b.dir_x;
@@ -112,13 +123,12 @@ template <typename Model>
   for (uint64_t clock = 1; clock < (uint64_t{1} << 24); ++clock) {
     m.strobe_i = rng() % 100 < strobe_percent;
     if (!golden.words()) {
-      m.x_i = static_cast<uint32_t>(rng()) & mask;
-      m.y_i = static_cast<uint32_t>(rng()) & mask;
-      m.cnt_x_i = static_cast<uint32_t>(rng()) & mask;
-      m.cnt_y_i = static_cast<uint32_t>(rng()) & mask;
+      words = Words{static_cast<uint32_t>(rng()) & mask, static_cast<uint32_t>(rng()) & mask,
+                    static_cast<uint32_t>(rng()) & mask, static_cast<uint32_t>(rng()) & mask};
       m.k_i = static_cast<uint8_t>(rng() % (w + 1));
       m.line_i = rng() % 2;
     }
+    drive_words(m, words, w);
     m.eval();
     std::ostringstream where;
     where << b.describe() << ", clock " << clock << ": ";
