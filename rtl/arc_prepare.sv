@@ -10,12 +10,15 @@
 // line (docs/circle-dda.md section 4). A failed radius check stops the dry run.
 // The dry run is a second dda_circle, one iteration per clock (BitSerial = 0), or the
 // bit-serial dda_serial.sv, 2P clocks per iteration (P = W rounded up to a power of two) for
-// about 150 logic cells fewer: the trade of docs/interpolator.md 3.5. The golden twin is
-// sc_model/golden/arc_prepare.cpp.
-// Timing: the first clock with run_i is the start edge: a geometric error makes done_o
-// high in that clock; otherwise the dry run and the check run from the next edges and
-// done_o rises in the clock after the later of the two: max(N, C) clocks after the start
-// edge, max(2PN, C) with BitSerial. done_o, the error and iterate_o are
+// about 150 logic cells fewer: the trade of docs/interpolator.md 3.5. With BitSerial the
+// geometry is bit-serial too, and the radius check, the serial dry run and the geometry read
+// the words as they turn in the decoder (shift_o), bit 0 first: no multiplexers. The golden
+// twin is sc_model/golden/arc_prepare.cpp.
+// Timing: the first clock with run_i is the start edge (BitSerial: the geometry's serial
+// pass takes that edge and W more, and the start edge is the one after them): a geometric
+// error makes done_o high in that clock; otherwise the dry run and the check run from the
+// next edges and done_o rises in the clock after the later of the two: max(N, C) clocks
+// after the start edge, max(2PN, C) with BitSerial. done_o, the error and iterate_o are
 // combinational from registers (and the held block); the decoder acts on them at that edge.
 module arc_prepare #(
   parameter int IncWidth  = 16,
@@ -52,21 +55,23 @@ module arc_prepare #(
   logic                 running_q, running_d;
 
   logic                start;
-  // |x0|, |y0|: the parallel dry run reads them whole, the radius check and the serial dry
-  // run bit 0 of the turning words. |x1|, |y1| in parallel serve the geometry's checks only:
-  // the radius check forms them serially.
+  // |x0|, |y0|: the parallel dry run reads them whole (the serial one, like the radius
+  // check, bit 0 of the turning words; with BitSerial the geometry does not form them).
+  // |x1|, |y1| are not read: the radius check forms them serially.
   /* verilator lint_off UNUSEDSIGNAL */
   logic [IncWidth-1:0] x0, y0, x1, y1;
   /* verilator lint_on UNUSEDSIGNAL */
-  logic                grow_x, grow_y, geo_err, add_x, add_y;
+  logic                grow_x, grow_y, geo_err, add_x, add_y, geo_shift, geo_done;
   logic [3:0]          geo_code;
   logic [KWidth-1:0]   k;
   logic                dry_iterate, dry_done, check_done, check_ok, check_shift;
 
-  assign start = run_i && !running_q;
+  // The check and the dry run start once the geometry is known (at once, or after its
+  // serial pass).
+  assign start = run_i && geo_done && !running_q;
 
-  arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth)) u_geometry (
-    .enable_i(run_i),
+  arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth), .BitSerial(BitSerial)) u_geometry (
+    .clk_i, .rst_ni, .enable_i(run_i), .shift_o(geo_shift), .done_o(geo_done),
     .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
     .x0_o(x0), .y0_o(y0), .x1_o(x1), .y1_o(y1), .grow_x_o(grow_x), .grow_y_o(grow_y),
     .add_x_o(add_x), .add_y_o(add_y),
@@ -83,8 +88,8 @@ module arc_prepare #(
     // its clocks 0 .. W - 1 and show bit i at bit 0.
     dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
       .clk_i, .rst_ni,
-      .load_i(start), .line_i(1'b0), .k_i(k), .x_bit_i(shift_o && x0[0]),
-      .y_bit_i(shift_o && y0[0]), .cnt_x_bit_i(shift_o && dx_i[0]),
+      .load_i(start), .line_i(1'b0), .k_i(k), .x_bit_i(shift_o && i_i[0]),
+      .y_bit_i(shift_o && j_i[0]), .cnt_x_bit_i(shift_o && dx_i[0]),
       .cnt_y_bit_i(shift_o && dy_i[0]), .cnt_y_i(dy_i), .bit_o(dry_bit),
       .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
       .strobe_i(running_q), .iterate_o(dry_iterate),
@@ -112,7 +117,7 @@ module arc_prepare #(
 
   arc_radius_check #(.IncWidth(IncWidth)) u_radius (
     .clk_i, .rst_ni, .start_i(start),
-    .x0_bit_i(x0[0]), .y0_bit_i(y0[0]), .dx_bit_i(dx_i[0]), .dy_bit_i(dy_i[0]),
+    .x0_bit_i(i_i[0]), .y0_bit_i(j_i[0]), .dx_bit_i(dx_i[0]), .dy_bit_i(dy_i[0]),
     .add_x_i(add_x), .add_y_i(add_y), .shift_o(check_shift),
     .done_o(check_done), .ok_o(check_ok)
   );
@@ -151,7 +156,7 @@ module arc_prepare #(
 
   // The words turn only while the arc is prepared: after a geometric error at the start edge
   // the check runs on unseen (the decoder has stopped).
-  assign shift_o  = check_shift && running_q;
+  assign shift_o  = geo_shift || (check_shift && running_q);
   assign k_o      = k;
   assign grow_x_o = grow_x;
   assign grow_y_o = grow_y;

@@ -20,8 +20,8 @@
 // Timing: a frame taken at edge e is processed at edge e+1 (tape_frame_input.sv). The LF of
 // a motion block puts the decoder in PREPARE: a line for k + 2 clocks (S = 0 at the LF,
 // F at the next edge, doubled at the k edges after, HOLD at the one after), an arc until
-// arc_prepare is done (max(N, C) clocks, or max(2PN, C) with BitSerial; C = (5W + 4)(2W + 4)
-// for the radius check), then HOLD or ERROR; the block buffer takes a held block at the
+// arc_prepare is done (max(N, C) clocks, or W + 1 + max(2PN, C) with BitSerial; C =
+// (5W + 4)(2W + 4) for the radius check), then HOLD or ERROR; the block buffer takes a held block at the
 // first edge where it is empty (blk_ready_i). With BitSerial a digit processed at edge e
 // holds the next frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the
 // word's limit is an error at edge e + NumWidth).

@@ -11,6 +11,7 @@ ArcPrepare::ArcPrepare(unsigned inc_width, bool bit_serial)
 
 void ArcPrepare::reset() {
   running_ = false;
+  geometry_edges_ = 0;
   dry_ = CircleDda{};
   serial_dry_ = SerialDda(inc_width_);
   radius_ = ArcRadiusCheck(inc_width_);
@@ -19,6 +20,13 @@ void ArcPrepare::reset() {
 ArcPrepare::Result ArcPrepare::edge(const ArcWords& w) {
   Result r;
   if (!running_) {
+    // With BitSerial the geometry's serial pass comes first (its first run edge, then one
+    // edge per bit; the words turn and come back in place).
+    if (geometry_edges_ < geometry_clocks(inc_width_, serial_)) {
+      ++geometry_edges_;
+      return r;
+    }
+    geometry_edges_ = 0;
     // Start edge: geometric errors are final at once; otherwise load the dry run and
     // the radius check. The words stay as they are until done: the geometry is kept.
     g_ = arc_geometry(w, inc_width_);

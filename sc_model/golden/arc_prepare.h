@@ -9,7 +9,8 @@
 // (docs/circle-dda.md section 4). The dry run is a CircleDda, one iteration per clock, or
 // with BitSerial the bit-serial SerialDda, 2P clocks per iteration (P = W rounded up to a
 // power of two). Both run in parallel with the check; a failed radius check stops the dry
-// run.
+// run. With BitSerial the geometry itself is found bit-serially first (rtl/arc_geometry.sv:
+// W + 1 clocks from the first run edge), so everything else starts W + 1 clocks later.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -28,10 +29,15 @@ class ArcPrepare {
 
   void reset();
 
-  // Clocks from the start edge of a good arc of n iterations to done.
+  // Clocks of the geometry before the check and the dry run start: its serial pass.
+  static uint64_t geometry_clocks(unsigned inc_width, bool bit_serial) {
+    return bit_serial ? inc_width + 1 : 0;
+  }
+  // Clocks from the first run edge of a good arc of n iterations to done.
   static uint64_t clocks(unsigned inc_width, bool bit_serial, uint64_t n) {
     const uint64_t dry = bit_serial ? 2 * uint64_t{SerialDda::pass_length(inc_width)} * n : n;
-    return std::max(dry, ArcRadiusCheck::clocks(inc_width)) + 1;
+    return geometry_clocks(inc_width, bit_serial) +
+           std::max(dry, ArcRadiusCheck::clocks(inc_width)) + 1;
   }
 
   // What the decoder sees in a clock with run_i = 1: done (the result is final; the
@@ -47,13 +53,17 @@ class ArcPrepare {
   // clock (from the registers before the edge), then updates the registers.
   Result edge(const ArcWords& w);
   // One clock edge with run_i = 0.
-  void idle() { running_ = false; }
+  void idle() {
+    running_ = false;
+    geometry_edges_ = 0;
+  }
 
 private:
   unsigned inc_width_;
   bool serial_;             // BitSerial: serial_dry_ runs, else dry_
 
   bool running_ = false;    // a prepared arc is in progress (after its start edge)
+  uint64_t geometry_edges_ = 0;  // run edges of the geometry's serial pass so far
   ArcGeometry g_;           // of the arc being prepared, from its start edge
   CircleDda dry_;           // the dry-run DDA (one iteration per clock)
   SerialDda serial_dry_;    // the bit-serial dry run (2P clocks per iteration)
