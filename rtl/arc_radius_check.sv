@@ -170,7 +170,7 @@ module arc_radius_check #(
       if (last_bit) first_pass_q <= 1'b0;
       end_carry_q <= end_cout;
       if (pass_q == '0 && first_bit) mul_q <= op_bit;
-      if ({1'b0, offset} == {1'b0, pass_q} + 1'b1) mul_next_q <= op_bit;
+      if (bit_q == {pass_q, 1'b1}) mul_next_q <= op_bit;  // i - b = b + 1
       if (last_bit) mul_q <= mul_next_q;
       unique case (phase_q)
         SumA, SumB: begin

@@ -69,6 +69,17 @@ module feed_generator #(
 
   assign lead_step = CmpWidth'(step_i) << LeadBits;
 
+  // a >= b, decided by the highest bit where they differ. Written out because synthesis
+  // builds `>=` as a subtraction on a carry chain, one logic cell a bit even when b is a
+  // constant (the board's M); as logic it folds to a few LUT4s there (74 logic cells fewer
+  // on the board, docs/bit-widths.md section 6), and it is smaller in interp_top too.
+  function automatic logic at_least(input logic [CmpWidth-1:0] a, input logic [CmpWidth-1:0] b);
+    at_least = 1'b1;
+    for (int i = 0; i < CmpWidth; i++) begin
+      if (a[i] != b[i]) at_least = a[i];
+    end
+  endfunction
+
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
     modulus     = PhaseWidth'(modulus_q);
@@ -79,7 +90,7 @@ module feed_generator #(
     saturated_d = saturated_q;
     if (load_i) begin
       phase_d     = PhaseWidth'(lead_step);
-      saturated_d = step_over_i || lead_step >= CmpWidth'(modulus_q);
+      saturated_d = step_over_i || at_least(lead_step, CmpWidth'(modulus_q));
     end else if (run_i) begin
       if (saturated_q) begin
         strobe_o = 1'b1;
