@@ -15,12 +15,9 @@
 // parameters. The one idiom for a parameterised type in a package, a parameterised class
 // (interp_pkg::block_c#(W)::block_t), is rejected by both tools of this flow (Verilator
 // 5.006: "Unsupported: Multiple '::'"; Yosys 0.23: no classes). So interp_top declares
-// block_t as a packed struct typedef over its own parameters, with the field types from here:
-//   n [SeqWidth], motion (motion_e), dx_neg, dx [IncWidth], dy_neg, dy [IncWidth],
-//   i [IncWidth], j [IncWidth] (|I|, |J|: the arc's start about its centre),
-//   step [FeedWidth + IncWidth + 1] (the feed step S), k [$clog2(IncWidth + 1)],
-//   grow_x, grow_y (an arc's |x|, |y| grow)
-// and gives block_buffer the width $bits of a block_t signal, so no width is counted by
+// block_t as a packed struct typedef over its own parameters (its fields are listed
+// there), with the field types from here (the motion code: motion_e), and gives
+// block_buffer the width $bits of a block_t signal, so no width is counted by
 // hand. Yosys 0.23 needs two detours there: a package type becomes a struct field only
 // through a local alias (typedef interp_pkg::motion_e motion_t;), and $bits takes a signal,
 // not a type.

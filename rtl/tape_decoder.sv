@@ -21,8 +21,8 @@
 // a motion block puts the decoder in PREPARE: a line for k + 2 clocks (S = 0 at the LF,
 // F at the next edge, doubled at the k edges after, HOLD at the one after), an arc until
 // arc_prepare is done (max(N, C) clocks, or W + 1 + max(2PN, C) with BitSerial; C =
-// (5W + 4)(2W + 4) for the radius check), then HOLD or ERROR; the block buffer takes a held block at the
-// first edge where it is empty (blk_ready_i). With BitSerial a digit processed at edge e
+// (5W + 4)(2W + 4) for the radius check), then HOLD or ERROR; the block buffer takes a held
+// block at the first edge where it is empty (blk_ready_i). With BitSerial a digit processed at edge e
 // holds the next frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the
 // word's limit is an error at edge e + NumWidth).
 // tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
@@ -124,15 +124,16 @@ module tape_decoder #(
   logic [1:0]           motion_q, motion_d;
   logic [FeedWidth-1:0] feed_q, feed_d;
   // X, Y, I, J (sign and magnitude): each loads the word parser's number when its word is
-  // committed (load_dx ...) and clears when the block ends, nothing else, so a bit is a
-  // flip-flop with its enable and synchronous reset and no multiplexer in front.
+  // committed (load_dx ...) and clears when the block ends, so a bit is a flip-flop with its
+  // enable and synchronous reset; the magnitudes also turn one place per clock while an
+  // arc's preparation reads them bit by bit (arc_shift, arc_prepare.sv).
   logic [IncWidth-1:0]  dx_q, dy_q, i_q, j_q;
   logic                 dx_neg_q, dy_neg_q, i_neg_q, j_neg_q;
   logic                 load_dx, load_dy, load_i, load_j;
   // k of the held block: for a line the bit length of (|dx| | |dy|) = bit length of
-  // max(|dx|, |dy|) (the line DDA runs 2^k iterations), computed at the LF; for an arc the
-  // circle DDA's k and the growth of |x|, |y|, from arc_prepare's geometry when the arc is
-  // ready. So the player has nothing to compute at the load.
+  // max(|dx|, |dy|) (the line DDA runs 2^k iterations), computed at its first PREPARE edge;
+  // for an arc the circle DDA's k and the growth of |x|, |y|, from arc_prepare's geometry
+  // when the arc is ready. So the player has nothing to compute at the load.
   logic [KWidth-1:0]    k_q, k_d;
   // step_q: the block's feed step S, summed in PREPARE on one adder, one addition per
   // clock (no multiplier or barrel shifter): S = 0 at the LF, then S + F for a line's first
