@@ -90,7 +90,7 @@ module arc_prepare #(
       .clk_i, .rst_ni,
       .load_i(start), .line_i(1'b0), .k_i(k), .x_bit_i(shift_o && i_i[0]),
       .y_bit_i(shift_o && j_i[0]), .cnt_x_bit_i(shift_o && dx_i[0]),
-      .cnt_y_bit_i(shift_o && dy_i[0]), .cnt_y_i(dy_i), .bit_o(dry_bit),
+      .cnt_y_bit_i(shift_o && dy_i[0]), .bit_o(dry_bit),
       .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
       .strobe_i(running_q), .iterate_o(dry_iterate),
       .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),

@@ -25,11 +25,11 @@
 // iteration ends. A line integrates both axes in the first pass (acc_X on the acc adder,
 // acc_Y on the mag adder: its magnitudes never move) and counts its 2^k iterations down in
 // cnt_X's place; the second pass leaves its words as they are.
-// Timing: load_i takes the block's k, line, growth and directions (and |dy| whole, for its
-// 0 and 1 flags) at an edge; its words come bit by bit in the block's first pass, bit
-// bit_o of each on the *_bit_i inputs in that clock: the player's multiplexers pick them
-// from the buffered block (interp_top.sv), which must hold until words_o falls; the dry
-// run's come from the decoder's words, which turn (arc_prepare.sv). An iteration starts
+// Timing: load_i takes the block's k, line, growth and directions at an edge; its words
+// come bit by bit in the block's first pass, bit bit_o of each on the *_bit_i inputs in
+// that clock: the player's multiplexers pick them from the buffered block (interp_top.sv),
+// which must hold until words_o falls; the dry run's come from the decoder's words, which
+// turn (arc_prepare.sv). An iteration starts
 // at an edge with strobe_i when the DDA is idle and the block not done (iterate_o): that
 // edge is clock 0 of its first pass; its pulses show after edge k - 1 (a line) or
 // P + k - 1 (an arc), and the iteration ends at edge 2P - 1, after which done_o is high if
@@ -46,12 +46,11 @@ module dda_serial #(
   input  logic [KWidth-1:0]   k_i,
   // The block's words, one bit per clock in its first pass: bit bit_o (0 from bit
   // IncWidth on) of |x| and |y| of the start relative to the centre (arc), |dx| and |dy|
-  // (the X and Y pulses of the block); |dy| whole at the load edge too (its 0 and 1 flags).
+  // (the X and Y pulses of the block).
   input  logic                x_bit_i,
   input  logic                y_bit_i,
   input  logic                cnt_x_bit_i,
   input  logic                cnt_y_bit_i,
-  input  logic [IncWidth-1:0] cnt_y_i,
   output logic [$clog2(IncWidth)-1:0] bit_o,
   input  logic                grow_x_i,   // |x| grows along the arc (arc)
   input  logic                grow_y_i,
@@ -95,13 +94,17 @@ module dda_serial #(
   logic [BitWidth-1:0] bit_q, next_bit;
   logic                pend_q, step_q, carry_acc_q, carry_mag_q, carry_cnt_q;
   logic                zero_x_q, zero_y_q, one_x_q, one_y_q, zrun_q, orun_q;
+  // yzero_q / yone_q: in the block's first pass, |dy| is 0 / 1 in the bits so far (its
+  // flags are made from its bits as they come: every count is < 2^k, so they are final
+  // by clock k - 1, where the first pass needs Y's zero flag).
+  logic                yzero_q, yone_q;
   logic                step_x_q, step_y_q;
 
   logic                active, first_bit, top_bit, below_k, pass_end, second;
   logic                c_is_y, u_is_y, u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero;
   logic                mag_add, mag_b, mag_sum, mag_cout, cnt_b, cnt_sum, cnt_cout;
   logic                zrun_d, orun_d, addend, acc_sum, acc_cout, acc_bit, step, pass_step;
-  logic                g_zero, g_one;
+  logic                g_zero, g_one, yzero_d, yone_d;
 
   assign iterate_o = strobe_i && !run_q && !done_q && !load_i;
   assign active    = !load_i && (run_q || iterate_o);
@@ -137,7 +140,7 @@ module dda_serial #(
   always_comb begin
     // Used only while running: don't-care ('x) otherwise (no gates, no evaluation).
     {u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero, mag_add, mag_b, mag_sum, mag_cout,
-     cnt_b, cnt_sum, cnt_cout, zrun_d, orun_d, addend, acc_sum, acc_cout, acc_bit, step,
+     cnt_b, cnt_sum, cnt_cout, zrun_d, orun_d, yzero_d, yone_d, addend, acc_sum, acc_cout, acc_bit, step,
      pass_step, g_zero, g_one} = 'x;
     if (active) begin
       // The mag adder: an arc's U update, mag + 1 or + all ones (- 1) when pend; a line's
@@ -153,6 +156,8 @@ module dda_serial #(
       {cnt_cout, cnt_sum} = {1'b0, u_cnt} + {1'b0, cnt_b} + {1'b0, !first_bit && carry_cnt_q};
       zrun_d  = (first_bit || zrun_q) && !cnt_sum;
       orun_d  = first_bit ? cnt_sum : orun_q && !cnt_sum;
+      yzero_d = (first_bit || yzero_q) && !cur[CntY];
+      yone_d  = first_bit ? cur[CntY] : yone_q && !cur[CntY];
       // C's half-step: acc_C + |O| (O = the other axis: U itself within an iteration, so
       // its moved magnitude), bit k - 1 forced on once O has no pulses left (arcs only).
       c_acc   = c_is_y ? cur[AccY] : cur[AccX];
@@ -162,7 +167,7 @@ module dda_serial #(
         c_zero = c_is_y ? zero_y_q : zero_x_q;
       end else begin
         o_mag  = c_is_y ? cur[MagX] : cur[MagY];
-        o_zero = c_is_y ? zero_x_q : zero_y_q;
+        o_zero = c_is_y ? zero_x_q : (words_q ? yzero_d : zero_y_q);
         c_zero = zrun_d;
       end
       addend  = o_mag || (top_bit && o_zero && !line_q);
@@ -232,7 +237,7 @@ module dda_serial #(
       half_q <= '0;
       bit_q  <= '0;
       {pend_q, step_q, carry_acc_q, carry_mag_q, carry_cnt_q} <= '0;
-      {zero_x_q, zero_y_q, one_x_q, one_y_q, zrun_q, orun_q} <= '0;
+      {zero_x_q, zero_y_q, one_x_q, one_y_q, zrun_q, orun_q, yzero_q, yone_q} <= '0;
       {step_x_q, step_y_q} <= '0;
     end else begin
       step_x_q <= carry_x_o;
@@ -244,9 +249,7 @@ module dda_serial #(
         grow_y_q <= grow_y_i;
         dir_x_q  <= dir_x_i;
         dir_y_q  <= dir_y_i;
-        // X's flags are made in the first pass (X is its U); Y's are read now.
-        zero_y_q <= cnt_y_i == '0;
-        one_y_q  <= cnt_y_i == IncWidth'(1);
+        // X's and Y's flags are made in the first pass (X is its U; Y's from its bits).
         {run_q, done_q, pend_q} <= '0;
         words_q  <= 1'b1;
         half_q   <= '0;
@@ -258,6 +261,8 @@ module dda_serial #(
         carry_cnt_q <= cnt_cout;
         zrun_q      <= zrun_d;
         orun_q      <= orun_d;
+        yzero_q     <= yzero_d;
+        yone_q      <= yone_d;
         if (top_bit) step_q <= step;
         if (pass_end) begin
           words_q <= 1'b0;
@@ -266,6 +271,7 @@ module dda_serial #(
           pend_q  <= pass_step;
           if (u_is_y) {zero_y_q, one_y_q} <= {zrun_d, orun_d};
           else        {zero_x_q, one_x_q} <= {zrun_d, orun_d};
+          if (words_q) {zero_y_q, one_y_q} <= {yzero_d, yone_d};
           // A line's iterations left were 0 if - 1 did not carry out.
           if (!second) last_q <= !cnt_cout;
           if (second) begin

@@ -246,7 +246,7 @@ module interp_top #(
       .clk_i, .rst_ni,
       .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_bit_i(word_bit(next_i, bit_q)),
       .y_bit_i(word_bit(next_j, bit_q)), .cnt_x_bit_i(word_bit(next_dx, bit_q)),
-      .cnt_y_bit_i(word_bit(next_dy, bit_q)), .cnt_y_i(next_dy), .bit_o(bit_q),
+      .cnt_y_bit_i(word_bit(next_dy, bit_q)), .bit_o(bit_q),
       .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
       .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
       .strobe_i(strobe), .iterate_o(iterate),

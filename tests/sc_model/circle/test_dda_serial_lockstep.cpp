@@ -72,7 +72,7 @@ Block line_block(int64_t dx, int64_t dy, std::mt19937_64& rng) {
   return b;
 }
 
-// The words' bits of this clock: bit bit_o of each (0 from bit w on), and |dy| whole.
+// The words' bits of this clock: bit bit_o of each (0 from bit w on).
 struct Words {
   uint32_t x = 0, y = 0, cnt_x = 0, cnt_y = 0;
 };
@@ -85,7 +85,6 @@ void drive_words(Model& m, const Words& v, unsigned w) {
   m.y_bit_i = at(v.y);
   m.cnt_x_bit_i = at(v.cnt_x);
   m.cnt_y_bit_i = at(v.cnt_y);
-  m.cnt_y_i = v.cnt_y;
 }
 
 // Loads one block into the verilated DDA and its twin and plays it to its end with strobes
