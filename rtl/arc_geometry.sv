@@ -28,7 +28,8 @@
 //      bit: no W-bit adder, zero compare of the end or priority encoder. The first clock
 //      with enable_i is edge S; edges S+1 .. S+W take bits 0 .. W-1 (shift_o); done_o and
 //      the results from edge S+W on (the words back in place) until enable_i falls.
-//      x0_o .. y1_o are not formed ('x): the serial readers take the words' bits.
+// The magnitudes themselves are not outputs: |x0|, |y0| are |I|, |J| as they are, and the
+// radius check forms |x1|, |y1| itself, bit-serially (arc_radius_check.sv).
 module arc_geometry #(
   parameter int IncWidth  = 16,
   parameter int KWidth    = $clog2(IncWidth + 1),
@@ -48,10 +49,6 @@ module arc_geometry #(
   input  logic                ccw_i,     // G03 (else G02)
   output logic                shift_o,   // BitSerial: the magnitudes turn at this edge
   output logic                done_o,    // the outputs below are valid in this clock
-  output logic [IncWidth-1:0] x0_o,      // |S| per axis (BitSerial = 0)
-  output logic [IncWidth-1:0] y0_o,
-  output logic [IncWidth-1:0] x1_o,      // |E| per axis (when the arc passes the checks)
-  output logic [IncWidth-1:0] y1_o,
   output logic                grow_x_o,  // |x| grows along the arc
   output logic                grow_y_o,
   output logic                add_x_o,   // |x1| = |x0| + |dx| (else |x0| - |dx|)
@@ -87,7 +84,6 @@ module arc_geometry #(
     logic [IncWidth-1:0] all_bits;
     always_comb begin
       {r_x, r_y, end_zero_x, end_zero_y, top_x, top_y, all_bits, k} = 'x;
-      x0_o = 'x;  y0_o = 'x;  x1_o = 'x;  y1_o = 'x;
       if (enable_i) begin
         r_x = {1'b0, i_i} + ({1'b0, dx_i} ^ {(IncWidth + 1){!add_x}}) + (IncWidth + 1)'(!add_x);
         r_y = {1'b0, j_i} + ({1'b0, dy_i} ^ {(IncWidth + 1){!add_y}}) + (IncWidth + 1)'(!add_y);
@@ -95,12 +91,8 @@ module arc_geometry #(
         end_zero_y = r_y == '0;
         top_x = r_x[IncWidth] ^ !add_x;
         top_y = r_y[IncWidth] ^ !add_y;
-        x0_o = i_i;
-        y0_o = j_i;
-        x1_o = r_x[IncWidth-1:0];
-        y1_o = r_y[IncWidth-1:0];
         // k: position of the highest 1 of any magnitude, plus one (a priority encoder).
-        all_bits = i_i | j_i | x1_o | y1_o;
+        all_bits = i_i | j_i | r_x[IncWidth-1:0] | r_y[IncWidth-1:0];
         k = '0;
         for (int b = 0; b < IncWidth; b++) begin
           if (all_bits[b]) k = KWidth'(b + 1);
@@ -153,7 +145,6 @@ module arc_geometry #(
     assign k          = k_q;
     assign done_o     = done_q;
     assign shift_o    = busy_q;
-    assign {x0_o, y0_o, x1_o, y1_o} = 'x;
   end
 
   // The checks, from the sums (valid with done_o).

@@ -55,12 +55,6 @@ module arc_prepare #(
   logic                 running_q, running_d;
 
   logic                start;
-  // |x0|, |y0|: the parallel dry run reads them whole (the serial one, like the radius
-  // check, bit 0 of the turning words; with BitSerial the geometry does not form them).
-  // |x1|, |y1| are not read: the radius check forms them serially.
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [IncWidth-1:0] x0, y0, x1, y1;
-  /* verilator lint_on UNUSEDSIGNAL */
   logic                grow_x, grow_y, geo_err, add_x, add_y, geo_shift, geo_done;
   logic [3:0]          geo_code;
   logic [KWidth-1:0]   k;
@@ -73,8 +67,7 @@ module arc_prepare #(
   arc_geometry #(.IncWidth(IncWidth), .KWidth(KWidth), .BitSerial(BitSerial)) u_geometry (
     .clk_i, .rst_ni, .enable_i(run_i), .shift_o(geo_shift), .done_o(geo_done),
     .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
-    .x0_o(x0), .y0_o(y0), .x1_o(x1), .y1_o(y1), .grow_x_o(grow_x), .grow_y_o(grow_y),
-    .add_x_o(add_x), .add_y_o(add_y),
+    .grow_x_o(grow_x), .grow_y_o(grow_y), .add_x_o(add_x), .add_y_o(add_y),
     .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
   );
 
@@ -104,7 +97,7 @@ module arc_prepare #(
     /* verilator lint_on UNUSEDSIGNAL */
     dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_dry_run (
       .clk_i, .rst_ni,
-      .load_i(start), .line_i(1'b0), .k_i(k), .x_i(x0), .y_i(y0), .cnt_x_i(dx_i),
+      .load_i(start), .line_i(1'b0), .k_i(k), .x_i(i_i), .y_i(j_i), .cnt_x_i(dx_i),
       .cnt_y_i(dy_i), .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
       .strobe_i(running_q),
       .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),

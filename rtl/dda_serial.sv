@@ -122,26 +122,30 @@ module dda_serial #(
   // starts at 2^(k-1) (rounding to nearest), whose bit i is 1 at i = k - 1 only; a line's
   // magnitude places hold the other axis's |d| (each integrator adds the other place, as
   // in dda_circle.sv) and its iterations left start at 2^k - 1 (the bits below k).
-  logic cnt_x_bit, cnt_y_bit;
-  assign cnt_x_bit = cnt_x_bit_i;
-  assign cnt_y_bit = cnt_y_bit_i;
   always_comb begin
     cur = read_q;
     if (words_q) begin
       cur[AccX] = top_bit;
       cur[AccY] = top_bit;
-      cur[MagX] = line_q ? cnt_y_bit : x_bit_i;
-      cur[MagY] = line_q ? cnt_x_bit : y_bit_i;
-      cur[CntX] = line_q ? below_k : cnt_x_bit;
-      cur[CntY] = cnt_y_bit;
+      cur[MagX] = line_q ? cnt_y_bit_i : x_bit_i;
+      cur[MagY] = line_q ? cnt_x_bit_i : y_bit_i;
+      cur[CntX] = line_q ? below_k : cnt_x_bit_i;
+      cur[CntY] = cnt_y_bit_i;
     end
   end
+
+  // A count is 0 / 1 in its bits so far, LSB first ({zero, one} after this bit): for U's
+  // count as its adder forms it, and for |dy| as it comes in the first pass.
+  function automatic logic [1:0] zero_one(input logic first, input logic zero_q,
+                                          input logic one_q, input logic b);
+    zero_one = {(first || zero_q) && !b, first ? b : one_q && !b};
+  endfunction
 
   always_comb begin
     // Used only while running: don't-care ('x) otherwise (no gates, no evaluation).
     {u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero, mag_add, mag_b, mag_sum, mag_cout,
-     cnt_b, cnt_sum, cnt_cout, zrun_d, orun_d, yzero_d, yone_d, addend, acc_sum, acc_cout, acc_bit, step,
-     pass_step, g_zero, g_one} = 'x;
+     cnt_b, cnt_sum, cnt_cout, zrun_d, orun_d, yzero_d, yone_d, addend, acc_sum, acc_cout,
+     acc_bit, step, pass_step, g_zero, g_one} = 'x;
     if (active) begin
       // The mag adder: an arc's U update, mag + 1 or + all ones (- 1) when pend; a line's
       // Y integrator, acc_Y + |dy| (in MagX's place). The cnt adder: an arc's cnt_U - pend;
@@ -154,10 +158,8 @@ module dda_serial #(
       cnt_b   = line_q || pend_q;
       {mag_cout, mag_sum} = {1'b0, u_mag} + {1'b0, mag_b} + {1'b0, !first_bit && carry_mag_q};
       {cnt_cout, cnt_sum} = {1'b0, u_cnt} + {1'b0, cnt_b} + {1'b0, !first_bit && carry_cnt_q};
-      zrun_d  = (first_bit || zrun_q) && !cnt_sum;
-      orun_d  = first_bit ? cnt_sum : orun_q && !cnt_sum;
-      yzero_d = (first_bit || yzero_q) && !cur[CntY];
-      yone_d  = first_bit ? cur[CntY] : yone_q && !cur[CntY];
+      {zrun_d, orun_d}  = zero_one(first_bit, zrun_q, orun_q, cnt_sum);
+      {yzero_d, yone_d} = zero_one(first_bit, yzero_q, yone_q, cur[CntY]);
       // C's half-step: acc_C + |O| (O = the other axis: U itself within an iteration, so
       // its moved magnitude), bit k - 1 forced on once O has no pulses left (arcs only).
       c_acc   = c_is_y ? cur[AccY] : cur[AccX];

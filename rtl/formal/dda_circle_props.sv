@@ -53,14 +53,14 @@ module dda_circle_props #(
   assign strobe = f_age_q == 2'd2;
 
   // The arc's geometry and the decoder's checks.
-  logic [W-1:0]      x0, y0, x1, y1;
   logic              grow_x, grow_y, geo_err, add_x, add_y, geo_shift, geo_done;
   logic [3:0]        geo_code;
   logic [KWidth-1:0] k;
   arc_geometry #(.IncWidth(W), .KWidth(KWidth)) u_geometry (
-    .clk_i, .rst_ni, .enable_i(1'b1), .shift_o(geo_shift), .done_o(geo_done), .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
-    .x0_o(x0), .y0_o(y0), .x1_o(x1), .y1_o(y1), .grow_x_o(grow_x), .grow_y_o(grow_y),
-    .add_x_o(add_x), .add_y_o(add_y), .k_o(k), .error_o(geo_err), .error_code_o(geo_code)
+    .clk_i, .rst_ni, .enable_i(1'b1), .shift_o(geo_shift), .done_o(geo_done),
+    .dx_i, .dx_neg_i, .dy_i, .dy_neg_i, .i_i, .i_neg_i, .j_i, .j_neg_i, .ccw_i,
+    .grow_x_o(grow_x), .grow_y_o(grow_y), .add_x_o(add_x), .add_y_o(add_y), .k_o(k),
+    .error_o(geo_err), .error_code_o(geo_code)
   );
 
   logic carry_x, carry_y, step_x, step_y, dir_x, dir_y, done;
