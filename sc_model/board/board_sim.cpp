@@ -236,7 +236,7 @@ class Runner {
       monitor.observe(c, cur);
       if (monitor.finished()) break;
     }
-    return monitor.finish();
+    return monitor.finish(cur);
   }
 
   uint64_t cycles() const { return final_cycle_; }

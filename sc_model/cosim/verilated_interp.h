@@ -72,13 +72,19 @@ class VerilatedInterp {
 
   bool frame_ready() const { return model_->frame_ready_o; }
 
-  // The outputs (interp_outputs.def), port by port.
-  InterpOutputs outputs() const {
+  // The outputs (interp_outputs.def), port by port, written into o field by field. A
+  // caller that keeps its outputs (the system model's engine, every clock) passes its own
+  // struct: building a temporary and copying it costs more than the model's evaluation
+  // of an idle clock (the copy's wide loads stall on the byte-wide stores just made).
+  void read_outputs(InterpOutputs& o) const {
     const Model& m = *model_;
-    InterpOutputs o;
 #define INTERP_OUTPUT(name, kind, width) o.name = Port##kind::from_rtl(m.name##_o);
 #include "interp_outputs.def"
 #undef INTERP_OUTPUT
+  }
+  InterpOutputs outputs() const {
+    InterpOutputs o;
+    read_outputs(o);
     return o;
   }
 

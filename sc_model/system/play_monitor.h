@@ -74,11 +74,11 @@ class PlayMonitor {
 
   // The outputs after edge `cycle` (0 = after reset). Call once per clock, in order.
   void observe(uint64_t cycle, const InterpOutputs& o);
-  // Closes the last block and matches the observed blocks to the tape's blocks.
-  PlaySummary finish();
+  // Closes the last block and matches the observed blocks to the tape's blocks; `last` is
+  // the outputs last observed (their final state, error and position go in the summary).
+  PlaySummary finish(const InterpOutputs& last);
 
-  bool finished() const { return last_.done || last_.error; }
-  const InterpOutputs& last() const { return last_; }
+  bool finished() const { return finished_; }
   // Progress: tape blocks whose pulses are complete.
   size_t pulse_block() const { return cursor_; }
 
@@ -89,7 +89,10 @@ class PlayMonitor {
   const tape::Program& program_;
   double feed_modulus_;
   PlaySummary s_;
-  InterpOutputs last_;
+  // Of the outputs last observed.
+  bool last_busy_ = false;
+  decltype(InterpOutputs::block_n) last_block_n_ = 0;
+  bool finished_ = false;  // done or error
   bool started_ = false;  // a block has loaded
   // Pulse-to-block assignment.
   size_t cursor_ = 0;

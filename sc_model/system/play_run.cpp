@@ -108,7 +108,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   sc_core::sc_start();
   top->finish();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.summary = top->monitor().finish();
+  r.summary = top->monitor().finish(top->outputs());
   r.limit_reached = top->limit_reached();
   r.frames_taken = top->source().frames_taken();
 

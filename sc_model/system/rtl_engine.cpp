@@ -27,7 +27,7 @@ class RtlEngine : public Engine {
   void reset() override {
     cycle_ = 0;
     rtl_.reset([this](int phase) { dump(phase); });
-    out_ = rtl_.outputs();
+    rtl_.read_outputs(out_);
   }
   void tick(const InterpInputs& in) override {
     ++cycle_;
@@ -35,7 +35,7 @@ class RtlEngine : public Engine {
       rtl_.tick(in, [this](int phase) { dump(phase); });
     else
       rtl_.tick(in);
-    out_ = rtl_.outputs();
+    rtl_.read_outputs(out_);
   }
   const InterpOutputs& outputs() const override { return out_; }
 

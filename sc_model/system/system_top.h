@@ -47,6 +47,8 @@ class SystemTop : public sc_core::sc_module {
   void finish();
 
   PlayMonitor& monitor() { return monitor_; }
+  // The engine's outputs after the last edge taken (the ones the monitor saw last).
+  const InterpOutputs& outputs() const { return engine_->outputs(); }
   const FrameSource& source() const { return source_; }
   bool limit_reached() const { return limit_reached_; }
   bool vcd_started() const { return vcd_open_ || vcd_closed_; }

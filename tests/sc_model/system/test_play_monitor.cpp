@@ -44,7 +44,7 @@ struct Script {
   PlaySummary run(const tape::Program& p, uint64_t modulus) {
     PlayMonitor m(p, modulus);
     for (size_t c = 0; c < clocks.size(); ++c) m.observe(c, clocks[c]);
-    return m.finish();
+    return m.finish(clocks.back());
   }
 };
 
@@ -195,7 +195,7 @@ TEST(PlayMonitor, GoldenRunsMeetTheGuarantees) {
       source.clock(ready);
       m.observe(dut.cycle(), dut.outputs());
     }
-    const PlaySummary r = m.finish();
+    const PlaySummary r = m.finish(dut.outputs());
     ASSERT_TRUE(r.done);
     EXPECT_EQ(r.final_x, r.expected_x);
     EXPECT_EQ(r.final_y, r.expected_y);

@@ -51,7 +51,7 @@ PlaySummary plain_golden_run(const std::vector<uint8_t>& frames, const tape::Pro
     source.clock(ready);
     m.observe(dut.cycle(), dut.outputs());
   }
-  return m.finish();
+  return m.finish(dut.outputs());
 }
 
 PlayOptions options(EngineKind engine) {
