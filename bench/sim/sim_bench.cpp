@@ -299,17 +299,27 @@ int run(const Options& o) {
   std::printf("tape %s: %zu frames, %llu cycles per run at %g Hz, reader %g cps (%llu cycles/frame)\n\n",
               o.tape.c_str(), frames.size(), static_cast<unsigned long long>(want.cycles),
               o.clock_hz, o.reader_cps, static_cast<unsigned long long>(cpf));
-  std::printf("| engine | cycles | CPU s | wall s | M cycles/s (CPU) | M cycles/s (wall) | note |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---|\n");
+  // The rate as a ratio to the golden model's of the same run: the machine's speed cancels.
+  const auto cpu_rate = [](const Row& r) { return r.cpu_s > 0 ? r.cycles / r.cpu_s / 1e6 : 0.0; };
+  double golden_rate = 0;
+  for (const Row& r : rows)
+    if (r.measured && r.engine == "golden") golden_rate = cpu_rate(r);
+  std::printf("| engine | cycles | CPU s | wall s | M cycles/s (CPU) | M cycles/s (wall) | / golden (CPU) | note |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---|\n");
   for (const Row& r : rows) {
     if (!r.measured) {
-      std::printf("| %s | | | | | | %s |\n", r.engine.c_str(), r.note.c_str());
+      std::printf("| %s | | | | | | | %s |\n", r.engine.c_str(), r.note.c_str());
       continue;
     }
-    std::printf("| %s | %llu | %.2f | %.2f | %.2f | %.2f | %s |\n", r.engine.c_str(),
-                static_cast<unsigned long long>(r.cycles), r.cpu_s, r.wall_s,
-                r.cpu_s > 0 ? r.cycles / r.cpu_s / 1e6 : 0.0,
-                r.wall_s > 0 ? r.cycles / r.wall_s / 1e6 : 0.0, r.note.c_str());
+    std::string ratio;
+    if (golden_rate > 0) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.3f", cpu_rate(r) / golden_rate);
+      ratio = buf;
+    }
+    std::printf("| %s | %llu | %.2f | %.2f | %.2f | %.2f | %s | %s |\n", r.engine.c_str(),
+                static_cast<unsigned long long>(r.cycles), r.cpu_s, r.wall_s, cpu_rate(r),
+                r.wall_s > 0 ? r.cycles / r.wall_s / 1e6 : 0.0, ratio.c_str(), r.note.c_str());
   }
   return 0;
 }
