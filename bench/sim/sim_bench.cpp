@@ -114,7 +114,7 @@ Row measure(const std::string& name, double budget, const EndState& want,
 
 // The golden model's harness reads its output registers in place, the outputs it needs
 // per clock (as play_rtl below): a copy of the whole output struct per clock would stall
-// on the model's byte stores of step_x / step_y and cost a fifth of the golden row.
+// on the model's byte stores of step_x / step_y and cost about a tenth of the golden row.
 EndState play(GoldenInterp& dut, const std::vector<uint8_t>& frames, uint64_t cpf, uint64_t max_cycles) {
   FrameSource source(frames, cpf);
   uint64_t cycle = 0;
