@@ -125,7 +125,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
 #endif
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  checker.finish();
+  checker.finish(out.run.last);
   if (out.reference) checker.check_tolerance(out.tol_blu);
   return out;
 }

@@ -3,8 +3,15 @@
 // Idea: the golden model and the verilated RTL harness have the same reset()/tick()/
 // outputs() shape, so one template drives either, with no SystemC and no virtual call on
 // the per-clock path. The run stops at done, at error, or at max_cycles.
+// No output struct is copied per clock: the golden model's is observed in place, and the
+// verilated model's ports are read field by field into one struct (read_outputs). A copy
+// of the whole struct right after its fields were stored one by one stalls on store
+// forwarding, which cost more than the verilated model's idle clock
+// (docs/performance.md).
 #pragma once
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include "frame_source.h"
 #include "interp_ports.h"
@@ -16,27 +23,51 @@ struct RunEnd {
   bool done = false;
   bool error = false;
   bool timed_out = false;  // max_cycles reached first
+  InterpOutputs last;      // the outputs of the last clock run
 };
+
+// The engine's outputs after its last clock: in place if it keeps them (GoldenInterp),
+// else read into `into` (VerilatedInterp::read_outputs).
+template <class Engine, class = void>
+struct ReadsOutputs : std::false_type {};
+template <class Engine>
+struct ReadsOutputs<Engine, std::void_t<decltype(std::declval<const Engine&>().read_outputs(
+                                std::declval<InterpOutputs&>()))>> : std::true_type {};
+
+template <class Engine>
+const InterpOutputs& current_outputs(const Engine& engine, InterpOutputs& into) {
+  if constexpr (ReadsOutputs<Engine>::value) {
+    engine.read_outputs(into);
+    return into;
+  } else {
+    return engine.outputs();
+  }
+}
 
 template <class Engine, class Observer>
 RunEnd run_engine(Engine& engine, FrameSource& source, uint64_t max_cycles, Observer&& observe) {
+  InterpOutputs read;
   engine.reset();
-  observe(uint64_t{0}, engine.outputs());
+  const InterpOutputs* last = &current_outputs(engine, read);
+  observe(uint64_t{0}, *last);
   RunEnd end;
   for (uint64_t cycle = 1; cycle <= max_cycles; ++cycle) {
-    const bool ready = engine.outputs().frame_ready;
+    const bool ready = last->frame_ready;
     engine.tick(source.inputs());
     source.clock(ready);
-    const InterpOutputs& o = engine.outputs();
+    last = &current_outputs(engine, read);
+    const InterpOutputs& o = *last;
     observe(cycle, o);
     end.cycles = cycle;
     if (o.done || o.error) {
       end.done = o.done;
       end.error = o.error;
+      end.last = o;
       return end;
     }
   }
   end.timed_out = true;
+  end.last = *last;
   return end;
 }
 

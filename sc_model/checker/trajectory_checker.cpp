@@ -117,7 +117,8 @@ void TrajectoryChecker::report(Rule rule, uint64_t cycle, std::string detail) {
 void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   if (!started_) {
     started_ = true;
-    prev_ = o;
+    prev_busy_ = o.busy;
+    prev_block_n_ = o.block_n;
     pos_ = {o.pos_x, o.pos_y};
     last_cycle_ = cycle;
     return;
@@ -130,7 +131,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
 
   // Block boundaries: a load shows as busy rising or block_n_o changing; two consecutive
   // line blocks with the same N are told apart by the documented block time.
-  bool load = o.busy && (!prev_.busy || o.block_n != prev_.block_n);
+  bool load = o.busy && (!prev_busy_ || o.block_n != prev_block_n_);
   if (!load && o.busy && active_ && options_.schedule && !blocks_[cur_].is_arc() &&
       cycle == results_[cur_].load_cycle + schedule_.duration() && cur_ + 1 < blocks_.size() &&
       blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n)
@@ -168,7 +169,8 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }
-  prev_ = o;
+  prev_busy_ = o.busy;
+  prev_block_n_ = o.block_n;
 }
 
 void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
@@ -281,8 +283,7 @@ void TrajectoryChecker::check_schedule(uint64_t cycle, bool pulsed) {
   }
 }
 
-void TrajectoryChecker::finish() {
-  const InterpOutputs& o = prev_;
+void TrajectoryChecker::finish(const InterpOutputs& o) {
   if (o.error) {
     report(Rule::kComplete, last_cycle_,
            "the interpolator stopped on a tape error: block N" + std::to_string(o.error_block) +

@@ -119,8 +119,10 @@ class TrajectoryChecker {
 
   // The outputs after reset (cycle 0), then after every clock edge, in order.
   void observe(uint64_t cycle, const InterpOutputs& o);
-  // End of the run (last outputs observed): the complete rule, an engine's tape error.
-  void finish();
+  // End of the run, with the last outputs observed: the complete rule, an engine's tape
+  // error. (The checker keeps per clock only what the next clock needs, not a copy of
+  // the outputs: see engine_run.h.)
+  void finish(const InterpOutputs& last);
   // The tolerance rule: every block whose total error exceeds tol_blu, at its maximum.
   void check_tolerance(double tol_blu);
 
@@ -135,7 +137,6 @@ class TrajectoryChecker {
   GridPoint position() const { return pos_; }
   uint64_t cycles() const { return last_cycle_; }
   uint64_t gap_clocks() const { return gap_clocks_; }
-  const InterpOutputs& last_outputs() const { return prev_; }
 
  private:
   void start_block(uint64_t cycle, const InterpOutputs& o);
@@ -150,7 +151,8 @@ class TrajectoryChecker {
   CheckerOptions options_;
 
   bool started_ = false;
-  InterpOutputs prev_;
+  bool prev_busy_ = false;        // the previous clock's busy_o and block_n_o
+  decltype(InterpOutputs::block_n) prev_block_n_ = 0;
   uint64_t last_cycle_ = 0;
   GridPoint pos_;                // integrated pulses
   uint64_t gap_clocks_ = 0;

@@ -124,7 +124,7 @@ class SyntheticRun : public ::testing::Test {
     checker_ = std::make_unique<TrajectoryChecker>(blocks_, nullptr, options_);
     checker_->observe(0, InterpOutputs{});
     for (size_t c = 0; c < clocks.size(); ++c) checker_->observe(c + 1, clocks[c]);
-    checker_->finish();
+    checker_->finish(clocks.empty() ? InterpOutputs{} : clocks.back());
   }
   static InterpOutputs busy(int64_t x, bool step = false) {
     InterpOutputs o;
