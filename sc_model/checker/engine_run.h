@@ -6,8 +6,7 @@
 // No output struct is copied per clock: the golden model's is observed in place, and the
 // verilated model's ports are read field by field into one struct (read_outputs). A copy
 // of the whole struct right after its fields were stored one by one stalls on store
-// forwarding, which cost more than the verilated model's idle clock
-// (docs/performance.md).
+// forwarding (docs/performance.md).
 #pragma once
 #include <cstdint>
 #include <type_traits>
@@ -51,22 +50,17 @@ RunEnd run_engine(Engine& engine, FrameSource& source, uint64_t max_cycles, Obse
   const InterpOutputs* last = &current_outputs(engine, read);
   observe(uint64_t{0}, *last);
   RunEnd end;
-  for (uint64_t cycle = 1; cycle <= max_cycles; ++cycle) {
+  for (uint64_t cycle = 1; cycle <= max_cycles && !last->done && !last->error; ++cycle) {
     const bool ready = last->frame_ready;
     engine.tick(source.inputs());
     source.clock(ready);
     last = &current_outputs(engine, read);
-    const InterpOutputs& o = *last;
-    observe(cycle, o);
+    observe(cycle, *last);
     end.cycles = cycle;
-    if (o.done || o.error) {
-      end.done = o.done;
-      end.error = o.error;
-      end.last = o;
-      return end;
-    }
   }
-  end.timed_out = true;
+  end.done = last->done;
+  end.error = last->error;
+  end.timed_out = !end.done && !end.error;
   end.last = *last;
   return end;
 }
