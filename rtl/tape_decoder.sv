@@ -22,9 +22,9 @@
 // F at the next edge, doubled at the k edges after, HOLD at the one after), an arc until
 // arc_prepare is done (max(N, C) clocks, or W + 1 + max(2PN, C) with BitSerial; C =
 // (5W + 4)(2W + 4) for the radius check), then HOLD or ERROR; the block buffer takes a held
-// block at the first edge where it is empty (blk_ready_i). With BitSerial a digit processed at edge e
-// holds the next frame until edge e + NumWidth + 1 (its x10 + d pass; a value over the
-// word's limit is an error at edge e + NumWidth).
+// block at the first edge where it is empty (blk_ready_i). With BitSerial a digit
+// processed at edge e holds the next frame until edge e + NumWidth + 1 (its x10 + d pass;
+// a value over the word's limit is an error at edge e + NumWidth).
 // tape_end_i (registered) with no frame waiting in LEADER/BODY/COMMENT is a truncated tape.
 // All outputs are functions of registers.
 module tape_decoder #(

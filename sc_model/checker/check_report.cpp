@@ -82,7 +82,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["cycles"] = c.cycles();
   j["gap_clocks"] = c.gap_clocks();
   j["run_seconds"] = o.seconds;
-  j["done"] = o.run.done;
+  j["done"] = o.run.last.done;
   j["final_position"] = f.xy(c.position());
   j["pulse_clocks"] = c.pulse_count();
   j["path_error"] = stat_json(c.path_error(), c, f);

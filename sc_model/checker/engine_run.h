@@ -9,38 +9,33 @@
 // forwarding (docs/performance.md).
 #pragma once
 #include <cstdint>
-#include <type_traits>
-#include <utility>
 
 #include "frame_source.h"
 #include "interp_ports.h"
+
+namespace ncinterp {
+template <class Model>
+class VerilatedInterp;  // verilated_interp.h, included where the RTL engine is built
+}  // namespace ncinterp
 
 namespace ncinterp::checker {
 
 struct RunEnd {
   uint64_t cycles = 0;
-  bool done = false;
-  bool error = false;
-  bool timed_out = false;  // max_cycles reached first
-  InterpOutputs last;      // the outputs of the last clock run
+  InterpOutputs last;  // the outputs after the last clock run: done, error, or neither
+                       // (max_cycles reached first)
 };
 
-// The engine's outputs after its last clock: in place if it keeps them (GoldenInterp),
-// else read into `into` (VerilatedInterp::read_outputs).
-template <class Engine, class = void>
-struct ReadsOutputs : std::false_type {};
+// The engine's outputs after its last clock: the golden model's in place; the verilated
+// model's ports read into `into`.
 template <class Engine>
-struct ReadsOutputs<Engine, std::void_t<decltype(std::declval<const Engine&>().read_outputs(
-                                std::declval<InterpOutputs&>()))>> : std::true_type {};
-
-template <class Engine>
-const InterpOutputs& current_outputs(const Engine& engine, InterpOutputs& into) {
-  if constexpr (ReadsOutputs<Engine>::value) {
-    engine.read_outputs(into);
-    return into;
-  } else {
-    return engine.outputs();
-  }
+const InterpOutputs& current_outputs(const Engine& engine, InterpOutputs&) {
+  return engine.outputs();
+}
+template <class Model>
+const InterpOutputs& current_outputs(const VerilatedInterp<Model>& engine, InterpOutputs& into) {
+  engine.read_outputs(into);
+  return into;
 }
 
 template <class Engine, class Observer>
@@ -58,9 +53,6 @@ RunEnd run_engine(Engine& engine, FrameSource& source, uint64_t max_cycles, Obse
     observe(cycle, *last);
     end.cycles = cycle;
   }
-  end.done = last->done;
-  end.error = last->error;
-  end.timed_out = !end.done && !end.error;
   end.last = *last;
   return end;
 }

@@ -117,8 +117,7 @@ void TrajectoryChecker::report(Rule rule, uint64_t cycle, std::string detail) {
 void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   if (!started_) {
     started_ = true;
-    prev_busy_ = o.busy;
-    prev_block_n_ = o.block_n;
+    prev_.keep(o);
     pos_ = {o.pos_x, o.pos_y};
     last_cycle_ = cycle;
     return;
@@ -131,7 +130,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
 
   // Block boundaries: a load shows as busy rising or block_n_o changing; two consecutive
   // line blocks with the same N are told apart by the documented block time.
-  bool load = o.busy && (!prev_busy_ || o.block_n != prev_block_n_);
+  bool load = prev_.loads(o);
   if (!load && o.busy && active_ && options_.schedule && !blocks_[cur_].is_arc() &&
       cycle == results_[cur_].load_cycle + schedule_.duration() && cur_ + 1 < blocks_.size() &&
       blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n)
@@ -169,8 +168,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }
-  prev_busy_ = o.busy;
-  prev_block_n_ = o.block_n;
+  prev_.keep(o);
 }
 
 void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {

@@ -151,8 +151,7 @@ class TrajectoryChecker {
   CheckerOptions options_;
 
   bool started_ = false;
-  bool prev_busy_ = false;        // the previous clock's busy_o and block_n_o
-  decltype(InterpOutputs::block_n) prev_block_n_ = 0;
+  BlockLoadWatch prev_;          // the previous clock's outputs
   uint64_t last_cycle_ = 0;
   GridPoint pos_;                // integrated pulses
   uint64_t gap_clocks_ = 0;

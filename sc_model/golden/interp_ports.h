@@ -142,4 +142,19 @@ struct InterpOutputs {
   bool operator!=(const InterpOutputs& o) const { return !(*this == o); }
 };
 
+// A block load as the outputs show it (docs/architecture.md): busy_o rises, or block_n_o
+// changes while busy. A monitor keeps these two outputs of the previous clock, not a copy
+// of them all: copying the whole struct right after an engine stored its fields one by
+// one stalls on store forwarding (docs/performance.md).
+struct BlockLoadWatch {
+  bool busy = false;                             // of the outputs kept last
+  decltype(InterpOutputs::block_n) block_n = 0;
+  // A block loaded at the edge that gave o (the outputs after the ones kept).
+  bool loads(const InterpOutputs& o) const { return o.busy && (!busy || o.block_n != block_n); }
+  void keep(const InterpOutputs& o) {
+    busy = o.busy;
+    block_n = o.block_n;
+  }
+};
+
 }  // namespace ncinterp

@@ -50,18 +50,13 @@ PlayMonitor::PlayMonitor(const tape::Program& program, uint64_t feed_modulus)
 
 void PlayMonitor::observe(uint64_t cycle, const InterpOutputs& o) {
   s_.cycles = cycle;
-  // Only the fields the next clock needs are kept: a copy of the whole struct would load
-  // it in wide words right after the engine stored its fields one by one, and that
-  // store-forwarding stall cost `play --engine rtl` a tenth of its speed.
-  const bool was_busy = last_busy_;
-  const auto was_block_n = last_block_n_;
-  last_busy_ = o.busy;
-  last_block_n_ = o.block_n;
+  // Block boundaries: a load, or busy falling. (Only what the next clock needs is kept of
+  // the outputs: a copy of them all stalled `play --engine rtl` by a tenth.)
+  const bool load = last_.loads(o);
+  const bool ends = last_.busy && (!o.busy || load);
+  last_.keep(o);
   finished_ = o.done || o.error;
   if (cycle == 0) return;  // the state after reset: nothing has happened yet
-  // Block boundaries: a load shows as busy rising or block_n changing while busy.
-  const bool load = o.busy && (!was_busy || o.block_n != was_block_n);
-  const bool ends = was_busy && (!o.busy || load);
   // (A timeline is empty only if an engine came out of reset busy: not a block to time.)
   if (ends && !s_.timeline.empty()) s_.timeline.back().end_cycle = cycle;
   if (load) {
@@ -108,7 +103,7 @@ void PlayMonitor::pulse(int64_t x, int64_t y) {
   }
   if (error > s_.max_path_error) {
     s_.max_path_error = error;
-    s_.max_path_error_block = cursor_ < blocks.size() ? blocks[cursor_].n : last_block_n_;
+    s_.max_path_error_block = cursor_ < blocks.size() ? blocks[cursor_].n : last_.block_n;
   }
 }
 

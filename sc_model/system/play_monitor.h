@@ -89,9 +89,7 @@ class PlayMonitor {
   const tape::Program& program_;
   double feed_modulus_;
   PlaySummary s_;
-  // Of the outputs last observed.
-  bool last_busy_ = false;
-  decltype(InterpOutputs::block_n) last_block_n_ = 0;
+  BlockLoadWatch last_;    // the outputs last observed
   bool finished_ = false;  // done or error
   bool started_ = false;  // a block has loaded
   // Pulse-to-block assignment.

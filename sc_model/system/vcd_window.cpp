@@ -34,15 +34,16 @@ BlockSpan find_block(uint32_t n, const std::vector<uint8_t>& frames, const Inter
   GoldenInterp dut(cfg);
   dut.reset();
   FrameSource source(frames, cycles_per_frame);
-  InterpOutputs last = dut.outputs();
+  const InterpOutputs& o = dut.outputs();
+  BlockLoadWatch last;
+  last.keep(o);
   BlockSpan span;
   bool in_block = false;
-  while (!last.done && !last.error && dut.cycle() < max_cycles) {
-    const bool ready = last.frame_ready;
+  while (!o.done && !o.error && dut.cycle() < max_cycles) {
+    const bool ready = o.frame_ready;
     dut.tick(source.inputs());
     source.clock(ready);
-    const InterpOutputs& o = dut.outputs();
-    const bool load = o.busy && (!last.busy || o.block_n != last.block_n);
+    const bool load = last.loads(o);
     if (in_block && (load || !o.busy)) {
       span.end = dut.cycle();
       span.ended = true;
@@ -52,7 +53,7 @@ BlockSpan find_block(uint32_t n, const std::vector<uint8_t>& frames, const Inter
       span.load = dut.cycle();
       span.found = in_block = true;
     }
-    last = o;
+    last.keep(o);
   }
   return span;
 }

@@ -44,12 +44,11 @@ std::vector<uint8_t> frames_of(std::string_view text) { return tape::add_parity(
 
 void OutputRecorder::observe(uint64_t cycle, const InterpOutputs& o) {
   cycles = cycle;
-  if (o.busy && (!was_busy_ || o.block_n != last.block_n))
-    starts.push_back({cycle, o.block_n, o.feed_saturated});
+  if (load_.loads(o)) starts.push_back({cycle, o.block_n, o.feed_saturated});
   if (o.busy) ++busy_cycles;
   if (o.step_x) pulses.push_back({cycle, o.block_n, 0, o.dir_x, o.pos_x, o.pos_y});
   if (o.step_y) pulses.push_back({cycle, o.block_n, 1, o.dir_y, o.pos_x, o.pos_y});
-  was_busy_ = o.busy;
+  load_.keep(o);
   last = o;
 }
 

@@ -58,7 +58,7 @@ class OutputRecorder {
   InterpOutputs last;
 
  private:
-  bool was_busy_ = false;
+  BlockLoadWatch load_;
 };
 
 // Checks a run of a line program that played completely (or up to an error: pass the

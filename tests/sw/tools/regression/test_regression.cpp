@@ -52,7 +52,7 @@ void expect_clean_check(const Case& c, EngineKind engine) {
   EXPECT_TRUE(out.passed()) << describe(run, out);
   const checker::TrajectoryChecker& k = *out.checker;
   EXPECT_EQ(k.results().size(), out.program.blocks.size());
-  EXPECT_TRUE(out.run.done);
+  EXPECT_TRUE(out.run.last.done);
   if (c.first_stage.arcs_circle) {
     // Arcs are programmed as arcs: the total error is the circle DDA's (<= 1 BLU, docs/
     // circle-dda.md) plus the rounding of the arc ends to the grid (<= 1/2 BLU).
