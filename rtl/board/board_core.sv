@@ -3,20 +3,27 @@
 //
 // What: uart_rx -> byte_fifo -> interp_top (rtl/interp_top.sv) -> step_stretcher per axis,
 // and status_line on the TX line. Each received byte is one tape frame (bit 7 = ISO 840
-// parity). The EOT frame (0x84: EOT with its parity bit) ends the tape: it drives
-// interp_top's tape_end_i, so the program is done after M02/M30, and a tape cut short
-// before that is an error, as on a real reader. Flow control (docs/board.md): cts_no (to
-// the host UART's CTS#, active low) goes high while the FIFO holds CtsStopLevel bytes or
-// more, and XOFF / XON go out on TX when the level crosses XoffLevel / XonLevel.
-// Board errors join the interpolator's (error LED and an "E" status line): 0x10 the FIFO
-// overflowed (flow control failed), 0x11 a UART framing error, 0x12 a step pulse was lost
-// (steps faster than the driver timing allows); their block is the current block_n and
-// their offset the number of bytes received (modulo 2^16).
-// The obs_* ports show interp_top's own outputs, the FIFO level and the received bytes to the board simulation (board-sim) and
-// are left unconnected on a real board. Static configuration comes in on ports (the board
-// tops tie them to constants): bit_cycles_i clocks per UART bit, feed_modulus_i, and the
-// stretcher's clock counts.
+// parity). The EOT frame (interp_pkg::LinkEndOfTape) ends the tape: it drives interp_top's
+// tape_end_i, so the program is done after M02/M30, and a tape cut short before that is an
+// error, as on a real reader. Flow control (docs/board.md): cts_no (to the host UART's
+// CTS#, active low) goes high while the FIFO holds CtsStopLevel bytes or more, and XOFF /
+// XON go out on TX when the level crosses XoffLevel / XonLevel.
+// Board errors join the interpolator's (error LED and an "E" status line): the FIFO
+// overflowed (flow control failed), a UART framing error, a step pulse was lost (steps
+// faster than the driver timing allows), codes interp_pkg::BoardErr* (the link's list,
+// sw/host/tape/board_link.def); their block is the current block_n and their offset the
+// number of bytes received (modulo 2^OffsetWidth).
+// The interpolator is built as the board's configuration asks (arch, circle mode) with the
+// widths its status line shows: positions, N and frame offsets of StatusDigits hex digits
+// (20 bits: +-524 mm of travel at 1 um). The obs_<output>_o ports show interp_top's own
+// outputs (one per line of sc_model/golden/interp_outputs.def, which board-sim reads them
+// by), the FIFO level and the received bytes to the board simulation; a real board leaves
+// them unconnected, and synthesis removes what only they read. Static configuration comes
+// in on ports (the board tops tie them to constants): bit_cycles_i clocks per UART bit,
+// feed_modulus_i, and the stretchers' clock counts.
 // Timing: every output is a register or a function of registers.
+// Golden twins: GoldenInterp for interp_top (board-sim compares nothing itself: it replays
+// the outputs into the play monitors), the UART and stretcher models of sc_model/board/.
 module board_core #(
   parameter int FifoAddrWidth = 8,
   parameter int CtsStopLevel  = 240,
@@ -31,12 +38,20 @@ module board_core #(
   // second at 12 MHz and W = 16), above what the step stretchers let through on most
   // blocks (docs/interpolator.md 3.5 and 5.6), and a digit's pass (NumWidth clocks) is
   // hidden between the UART's frames.
-  parameter bit BitSerial  = 1'b1
+  parameter bit BitSerial  = 1'b1,
+  // Circle mode (interp_top's CircleMode): the iCEstick's core is built without it.
+  parameter bit CircleMode = 1'b1,
+  // The interpolator's widths on the board: what the status line's fields hold.
+  parameter int PosWidth    = 4 * interp_pkg::StatusDigits,
+  parameter int SeqWidth    = 4 * interp_pkg::StatusDigits,
+  parameter int OffsetWidth = 4 * interp_pkg::StatusDigits,
+  // feed_modulus_i's width: enough for the board's clock (board_top).
+  parameter int ModulusWidth = 48
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
   input  logic [DivWidth-1:0] bit_cycles_i,
-  input  logic [47:0] feed_modulus_i,
+  input  logic [ModulusWidth-1:0] feed_modulus_i,
   input  logic [StretchWidth-1:0] setup_cycles_i,
   input  logic [StretchWidth-1:0] pulse_cycles_i,
   input  logic [StretchWidth-1:0] low_cycles_i,
@@ -53,21 +68,21 @@ module board_core #(
   output logic        led_busy_o,
   output logic        led_done_o,
   output logic        led_error_o,
-  // The interpolator's outputs, for the board simulation.
+  // The interpolator's outputs, for the board simulation (interp_outputs.def's names).
   output logic        obs_frame_ready_o,
   output logic        obs_step_x_o,
   output logic        obs_dir_x_o,
   output logic        obs_step_y_o,
   output logic        obs_dir_y_o,
-  output logic [31:0] obs_pos_x_o,
-  output logic [31:0] obs_pos_y_o,
-  output logic [19:0] obs_block_n_o,
+  output logic [PosWidth-1:0]    obs_pos_x_o,
+  output logic [PosWidth-1:0]    obs_pos_y_o,
+  output logic [SeqWidth-1:0]    obs_block_n_o,
   output logic        obs_busy_o,
   output logic        obs_done_o,
   output logic        obs_error_o,
   output logic [3:0]  obs_error_code_o,
-  output logic [19:0] obs_error_block_o,
-  output logic [31:0] obs_error_offset_o,
+  output logic [SeqWidth-1:0]    obs_error_block_o,
+  output logic [OffsetWidth-1:0] obs_error_offset_o,
   output logic        obs_feed_saturated_o,
   output logic [FifoAddrWidth:0] obs_fifo_level_o,
   output logic [7:0]  obs_rx_data_o,
@@ -75,7 +90,7 @@ module board_core #(
   output logic [7:0]  board_error_code_o
 );
 
-  localparam logic [7:0] EotFrame = 8'h84;
+  localparam int FieldWidth = 4 * interp_pkg::StatusDigits;
 
   logic [7:0]             rx_data, fifo_data;
   logic                   rx_valid, rx_ferr, fifo_valid, fifo_ready, overflow;
@@ -83,14 +98,15 @@ module board_core #(
   logic                   frame_ready, frame_valid, eot;
   logic                   overrun_x, overrun_y;
   logic                   i_step_x, i_dir_x, i_step_y, i_dir_y, i_busy, i_done, i_error, i_sat;
-  logic [31:0]            i_pos_x, i_pos_y, i_error_offset;
-  logic [19:0]            i_block_n, i_error_block;
+  logic [PosWidth-1:0]    i_pos_x, i_pos_y;
+  logic [OffsetWidth-1:0] i_error_offset;
+  logic [SeqWidth-1:0]    i_block_n, i_error_block;
   logic [3:0]             i_error_code;
 
   // tape_end_q: the EOT frame has been read. xoff_q: the host has been asked to stop.
   // cts_n_q: CTS# to the host. rx_count_q: bytes received. board_err_q: board error code.
   logic                   tape_end_q, xoff_q, cts_n_q;
-  logic [15:0]            rx_count_q;
+  logic [OffsetWidth-1:0] rx_count_q;
   logic [7:0]             board_err_q;
 
   uart_rx #(.DivWidth(DivWidth)) u_rx (
@@ -105,11 +121,14 @@ module board_core #(
   );
 
   // The EOT frame is taken by the board, never shown to the decoder.
-  assign eot         = fifo_valid && fifo_data == EotFrame;
+  assign eot         = fifo_valid && fifo_data == interp_pkg::LinkEndOfTape;
   assign frame_valid = fifo_valid && !eot && !tape_end_q;
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
-  interp_top #(.BitSerial(BitSerial)) u_interp (
+  interp_top #(
+    .BitSerial(BitSerial), .CircleMode(CircleMode), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
+    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth)
+  ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i,
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
@@ -133,20 +152,26 @@ module board_core #(
     .overrun_o(overrun_y)
   );
 
-  logic        any_error;
-  logic [7:0]  line_code;
-  logic [19:0] line_block;
-  logic [31:0] line_offset;
+  // The status line's fields: N and offsets zero-extended, positions sign-extended to the
+  // field's width.
+  logic                  any_error;
+  logic [7:0]            line_code;
+  logic [SeqWidth-1:0]   line_block;
+  logic [OffsetWidth-1:0] line_offset;
+  logic [FieldWidth-1:0] field_pos_x, field_pos_y;
   assign any_error   = i_error || board_err_q != '0;
   assign line_code   = board_err_q != '0 ? board_err_q : {4'd0, i_error_code};
   assign line_block  = board_err_q != '0 ? i_block_n : i_error_block;
-  assign line_offset = board_err_q != '0 ? {16'd0, rx_count_q} : i_error_offset;
+  assign line_offset = board_err_q != '0 ? rx_count_q : i_error_offset;
+  assign field_pos_x = FieldWidth'($signed(i_pos_x));
+  assign field_pos_y = FieldWidth'($signed(i_pos_y));
 
-  status_line #(.DivWidth(DivWidth)) u_status (
+  status_line #(.DivWidth(DivWidth), .FieldWidth(FieldWidth)) u_status (
     .clk_i, .rst_ni, .bit_cycles_i,
-    .block_n_i(i_block_n), .busy_i(i_busy), .done_i(i_done), .error_i(any_error),
-    .error_code_i(line_code), .error_block_i(line_block), .error_offset_i(line_offset),
-    .pos_x_i(i_pos_x), .pos_y_i(i_pos_y), .xoff_i(xoff_q), .tx_o
+    .block_n_i(FieldWidth'(i_block_n)), .busy_i(i_busy), .done_i(i_done), .error_i(any_error),
+    .error_code_i(line_code), .error_block_i(FieldWidth'(line_block)),
+    .error_offset_i(FieldWidth'(line_offset)), .pos_x_i(field_pos_x), .pos_y_i(field_pos_y),
+    .xoff_i(xoff_q), .tx_o
   );
 
   always_ff @(posedge clk_i) begin
@@ -164,9 +189,9 @@ module board_core #(
       cts_n_q <= level >= (FifoAddrWidth + 1)'(CtsStopLevel);
       // The first board error is kept.
       if (board_err_q == '0) begin
-        if (overflow) board_err_q <= 8'h10;
-        else if (rx_ferr) board_err_q <= 8'h11;
-        else if (overrun_x || overrun_y) board_err_q <= 8'h12;
+        if (overflow) board_err_q <= interp_pkg::BoardErrFifoOverflow;
+        else if (rx_ferr) board_err_q <= interp_pkg::BoardErrFraming;
+        else if (overrun_x || overrun_y) board_err_q <= interp_pkg::BoardErrStepOverrun;
       end
     end
   end

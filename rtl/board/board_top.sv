@@ -1,6 +1,9 @@
 // Pin-level board top shared by the iCEstick and the iCEBreaker: board_core with its
 // static configuration computed from the board clock and the user's parameters, a
-// power-on reset, and the pins named as in rtl/board/<board>.pcf.
+// power-on reset, and the pins named as in rtl/board/<board>.pcf. The board's core
+// configuration (arch, circle mode) is a parameter: `ncinterp bitstream` sets each board's
+// (sw/tools/bitstream/bitstream.cpp: the iCEstick's HX1K takes the serial core without
+// circle mode, the iCEBreaker the whole one).
 //
 // What: the board's oscillator clocks everything directly (no PLL: 12 MHz is ample for
 // the interpolator, docs/board.md), and feed_modulus = 60 * ClockHz * 10^3 makes every
@@ -18,7 +21,10 @@ module board_top #(
   parameter int     DirSetupNs = 1_000,
   parameter int     DirHoldNs  = 1_000,
   // The iCEBreaker's LEDs light on a low pin, the iCEstick's on a high one.
-  parameter int     LedActiveLow = 0
+  parameter int     LedActiveLow = 0,
+  // The interpolator's configuration (interp_top's BitSerial, CircleMode).
+  parameter bit     BitSerial  = 1'b1,
+  parameter bit     CircleMode = 1'b1
 ) (
   input  logic clk_i,
   input  logic uart_rx_i,
@@ -43,7 +49,9 @@ module board_top #(
                                         ns_to_cycles(DirHoldNs, ClockHz) - PulseCycles : 16'd1;
   localparam logic [15:0] LowCycles   = ns_to_cycles(LowNs, ClockHz) > HoldLow ?
                                         ns_to_cycles(LowNs, ClockHz) : HoldLow;
-  localparam logic [47:0] FeedModulus = 48'(64'(ClockHz) * 64'd60_000);
+  // M = 60 * ClockHz * 10^3 (FeedFracDigits 3), as wide as it needs.
+  localparam longint FeedModulus  = 64'(ClockHz) * 64'd60_000;
+  localparam int     ModulusWidth = $clog2(FeedModulus + 1);
 
   // por_q: counts clocks after configuration; the core leaves reset when it saturates.
   logic [3:0] por_q = '0;
@@ -56,9 +64,11 @@ module board_top #(
   assign led_error_o = led_error ^ LedLow;
 
   /* verilator lint_off PINCONNECTEMPTY */
-  board_core u_core (
+  board_core #(
+    .BitSerial(BitSerial), .CircleMode(CircleMode), .ModulusWidth(ModulusWidth)
+  ) u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
-    .bit_cycles_i(12'(BitCycles)), .feed_modulus_i(FeedModulus),
+    .bit_cycles_i(12'(BitCycles)), .feed_modulus_i(ModulusWidth'(FeedModulus)),
     .setup_cycles_i(8'(SetupCycles)), .pulse_cycles_i(8'(PulseCycles)),
     .low_cycles_i(8'(LowCycles)),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),

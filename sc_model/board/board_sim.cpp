@@ -16,8 +16,11 @@
 #include <memory>
 #include <stdexcept>
 
-#include "Vboard_core.h"
-#include "Vboard_core_trace.h"
+#include "Vboard_icebreaker.h"
+#include "Vboard_icebreaker_trace.h"
+#include "Vboard_icestick.h"
+#include "Vboard_icestick_trace.h"
+#include "boards.h"
 #include "atomic_file.h"
 #include "play_monitor.h"
 #include "play_report.h"
@@ -75,25 +78,16 @@ class Pty {
   int master_ = -1, slave_ = -1;
 };
 
-// The interpolator's outputs on the board core's obs_* ports.
+// The interpolator's outputs on the board core's obs_<output>_o ports, one per line of
+// interp_outputs.def, each as wide as the board's configuration makes it (a position is
+// sign-extended from its PosWidth bits).
 template <class Model>
-InterpOutputs interp_outputs(const Model& m) {
+InterpOutputs interp_outputs(const Model& m, const InterpConfig& cfg) {
   InterpOutputs o;
-  o.frame_ready = m.obs_frame_ready_o;
-  o.step_x = m.obs_step_x_o;
-  o.dir_x = m.obs_dir_x_o;
-  o.step_y = m.obs_step_y_o;
-  o.dir_y = m.obs_dir_y_o;
-  o.pos_x = static_cast<int32_t>(m.obs_pos_x_o);
-  o.pos_y = static_cast<int32_t>(m.obs_pos_y_o);
-  o.block_n = m.obs_block_n_o;
-  o.busy = m.obs_busy_o;
-  o.done = m.obs_done_o;
-  o.error = m.obs_error_o;
-  o.error_code = m.obs_error_code_o;
-  o.error_block = m.obs_error_block_o;
-  o.error_offset = m.obs_error_offset_o;
-  o.feed_saturated = m.obs_feed_saturated_o;
+#define INTERP_OUTPUT(name, kind, width) \
+  o.name = Port##kind::from_signal(static_cast<Port##kind::Signal>(m.obs_##name##_o), width);
+#include "interp_outputs.def"
+#undef INTERP_OUTPUT
   return o;
 }
 
@@ -101,9 +95,9 @@ template <class Model>
 class Runner {
  public:
   // With a VCD: the model is traced into `vcd`, which opens `vcd_path`.
-  Runner(const BoardSimOptions& o, const CoreConfig& c, Pty& pty, VerilatedVcdC* vcd,
-         const std::string& vcd_path)
-      : o_(o), c_(c), pty_(pty), context_(std::make_unique<VerilatedContext>()), vcd_(vcd) {
+  Runner(const BoardSimOptions& o, const CoreConfig& c, const InterpConfig& cfg, Pty& pty,
+         VerilatedVcdC* vcd, const std::string& vcd_path)
+      : o_(o), c_(c), cfg_(cfg), pty_(pty), context_(std::make_unique<VerilatedContext>()), vcd_(vcd) {
     if (vcd_) context_->traceEverOn(true);
     m_ = std::make_unique<Model>(context_.get(), "board");
     if (vcd_) {
@@ -131,7 +125,7 @@ class Runner {
     std::deque<uint8_t> in, out;
     std::string line;
     bool stopped_by_xoff = false, sender_seen = false, final_line = false;
-    InterpOutputs last = interp_outputs(m);
+    InterpOutputs last = interp_outputs(m, cfg_);
     trace_.push_back({0, last});
     auto idle_since = std::chrono::steady_clock::now();
     const uint64_t byte_cycles = 10ull * c_.bit_cycles;
@@ -175,10 +169,10 @@ class Runner {
       if (host_rx.valid()) {
         const uint8_t b = host_rx.data();
         out.push_back(b);
-        if (b == kXoff) {
+        if (b == kLinkXoff) {
           stopped_by_xoff = true;
           ++r.xoff_sent;
-        } else if (b == kXon) {
+        } else if (b == kLinkXon) {
           stopped_by_xoff = false;
         } else if (b == '\n') {
           if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -190,11 +184,11 @@ class Runner {
         }
       }
       // The frames the board received (its receiver's bytes; the EOT frame is not one).
-      if (m.obs_rx_valid_o && m.obs_rx_data_o != kEndOfTapeFrame) r.frames.push_back(m.obs_rx_data_o);
+      if (m.obs_rx_valid_o && m.obs_rx_data_o != kLinkEndOfTape) r.frames.push_back(m.obs_rx_data_o);
       r.max_fifo_level = std::max<unsigned>(r.max_fifo_level, m.obs_fifo_level_o);
       r.board_error = m.board_error_code_o;
 
-      const InterpOutputs now = interp_outputs(m);
+      const InterpOutputs now = interp_outputs(m, cfg_);
       if (!(now == last)) {
         trace_.push_back({cycle_, now});
         last = now;
@@ -268,6 +262,7 @@ class Runner {
 
   const BoardSimOptions& o_;
   CoreConfig c_;
+  InterpConfig cfg_;  // the interpolator as the board builds it
   Pty& pty_;
   std::unique_ptr<VerilatedContext> context_;
   VerilatedVcdC* vcd_;
@@ -276,17 +271,19 @@ class Runner {
   std::vector<std::pair<uint64_t, InterpOutputs>> trace_;
 };
 
-// The fast model has no trace(); only the traced one is given a VCD.
+// The fast models have no trace(); only the traced ones are given a VCD.
 template <>
-void Runner<Vboard_core>::trace(Vboard_core&) {}
+void Runner<Vboard_icestick>::trace(Vboard_icestick&) {}
+template <>
+void Runner<Vboard_icebreaker>::trace(Vboard_icebreaker&) {}
 
 template <class Model>
 BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, Pty& pty, VerilatedVcdC* vcd,
                         const std::string& vcd_path) {
-  Runner<Model> runner(o, c, pty, vcd, vcd_path);
+  const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz);
+  Runner<Model> runner(o, c, cfg, pty, vcd, vcd_path);
   const auto t0 = std::chrono::steady_clock::now();
   BoardSimResult r = runner.run();
-  const InterpConfig cfg = interp_config(o.clock_hz);
   r.readback = tape::parse_frames_partial(r.frames, tape_format_of(cfg));
   system::PlayResult& p = r.play;
   p.summary = runner.replay(r.readback.program);
@@ -330,8 +327,8 @@ CoreConfig core_config(const BoardSimOptions& o) {
 
 BoardSimResult run_board_sim(const BoardSimOptions& o,
                              const std::function<void(const std::string&)>& on_ready) {
-  if (o.board != "icestick" && o.board != "icebreaker")
-    throw std::runtime_error("--board must be icestick or icebreaker");
+  // The board core of the board's configuration (sc_model/board/CMakeLists.txt).
+  const bool circle_mode = board_named(o.board).circle_mode;
   const CoreConfig c = core_config(o);
   std::unique_ptr<AtomicOutputFile> vcd_file;
   std::unique_ptr<VerilatedVcdC> vcd;
@@ -339,8 +336,11 @@ BoardSimResult run_board_sim(const BoardSimOptions& o,
   Pty pty(o.pty_link);
   if (on_ready) on_ready(o.pty_link);
   if (vcd_file) vcd = std::make_unique<VerilatedVcdC>();
-  BoardSimResult r = vcd_file ? run_with<Vboard_core_trace>(o, c, pty, vcd.get(), vcd_file->temp_path())
-                              : run_with<Vboard_core>(o, c, pty, nullptr, "");
+  BoardSimResult r =
+      vcd_file ? (circle_mode ? run_with<Vboard_icebreaker_trace>(o, c, pty, vcd.get(), vcd_file->temp_path())
+                              : run_with<Vboard_icestick_trace>(o, c, pty, vcd.get(), vcd_file->temp_path()))
+               : (circle_mode ? run_with<Vboard_icebreaker>(o, c, pty, nullptr, "")
+                              : run_with<Vboard_icestick>(o, c, pty, nullptr, ""));
   if (vcd) {
     vcd->close();
     if (r.play.ok()) vcd_file->commit();
@@ -363,7 +363,7 @@ nlohmann::json board_sim_report(const BoardSimResult& r, const BoardSimOptions& 
                 {"timed_out", r.timed_out}};
   if (r.board_error) {
     j["status"] = "error";
-    j["error"] = {{"message", board_error_message(r.board_error)}};
+    j["error"] = {{"code", r.board_error}, {"message", board_error_message(r.board_error)}};
   }
   if (r.timed_out) j["status"] = "error";
   return j;

@@ -32,44 +32,56 @@ std::string mm(int64_t blu, unsigned frac_digits) {
 }  // namespace
 
 std::optional<StatusLine> parse_status_line(const std::string& line) {
-  // "K CC NNNNN AAAAAAAA BBBBBBBB"
-  if (line.size() != 28 || line[1] != ' ' || line[4] != ' ' || line[10] != ' ' || line[19] != ' ')
-    return std::nullopt;
+  // "K AAAAA BBBBB CCCCC": a kind letter, then three fields of kStatusDigits hex digits.
+  constexpr size_t field = 1 + kStatusDigits;
+  if (line.size() != 1 + 3 * field) return std::nullopt;
   StatusLine s;
   s.kind = line[0];
-  if (s.kind != 'B' && s.kind != 'D' && s.kind != 'E') return std::nullopt;
-  uint64_t code, n, a, b;
-  if (!hex_field(line, 2, 2, code) || !hex_field(line, 5, 5, n) || !hex_field(line, 11, 8, a) ||
-      !hex_field(line, 20, 8, b))
-    return std::nullopt;
-  s.code = static_cast<uint8_t>(code);
-  s.block = static_cast<uint32_t>(n);
-  if (s.kind == 'E') {
-    s.offset = static_cast<uint32_t>(a);
+  if (s.kind != kStatusBlock && s.kind != kStatusDone && s.kind != kStatusError) return std::nullopt;
+  uint64_t f[3];
+  for (size_t i = 0; i < 3; ++i)
+    if (line[1 + i * field] != ' ' || !hex_field(line, 2 + i * field, kStatusDigits, f[i])) return std::nullopt;
+  // A position field is two's complement in its 4 * kStatusDigits bits.
+  const auto position = [](uint64_t v) {
+    const uint64_t sign = uint64_t{1} << (4 * kStatusDigits - 1);
+    return static_cast<int64_t>((v ^ sign) - sign);
+  };
+  s.block = static_cast<uint32_t>(f[0]);
+  if (s.kind == kStatusError) {
+    s.offset = static_cast<uint32_t>(f[1]);
+    if (f[2] > 0xff) return std::nullopt;
+    s.code = static_cast<uint8_t>(f[2]);
   } else {
-    s.x = static_cast<int32_t>(static_cast<uint32_t>(a));
-    s.y = static_cast<int32_t>(static_cast<uint32_t>(b));
+    s.x = position(f[1]);
+    s.y = position(f[2]);
   }
   return s;
 }
 
 std::string board_error_message(uint8_t code) {
-  switch (static_cast<BoardError>(code)) {
-    case BoardError::kFifoOverflow: return "the board's tape FIFO overflowed (flow control failed)";
-    case BoardError::kFraming: return "UART framing error (wrong baud rate or a broken line)";
-    case BoardError::kStepOverrun:
-      return "a step pulse was lost: steps came faster than the driver timing allows";
+  switch (code) {
+#define BOARD_LINK_BYTE(name, byte, meaning)
+#define BOARD_ERROR(name, code, message) \
+  case code:                             \
+    return message;
+#define BOARD_STATUS(name, letter, meaning)
+#define BOARD_STATUS_DIGITS(n)
+#include "board_link.def"
+#undef BOARD_LINK_BYTE
+#undef BOARD_ERROR
+#undef BOARD_STATUS
+#undef BOARD_STATUS_DIGITS
   }
   return tape_error_message(static_cast<TapeError>(code));
 }
 
 std::string describe(const StatusLine& s, unsigned frac_digits) {
   const std::string n = "N" + std::to_string(s.block);
-  if (s.kind == 'E')
+  if (s.kind == kStatusError)
     return "error in block " + n + " at offset " + std::to_string(s.offset) + ": " +
            board_error_message(s.code) + " (code " + std::to_string(s.code) + ")";
   const std::string pos = "X" + mm(s.x, frac_digits) + " Y" + mm(s.y, frac_digits) + " mm";
-  return s.kind == 'D' ? "program done after block " + n + " at " + pos
+  return s.kind == kStatusDone ? "program done after block " + n + " at " + pos
                        : "block " + n + " ended at " + pos;
 }
 

@@ -1,7 +1,9 @@
 // The board's status lines (rtl/board/status_line.sv) as data, and in words.
-// Idea: the board sends fixed-layout hex lines ("B 00 0000C 0001F400 FFFFF600"), cheap in
-// hardware; the host parses them here and shows them in mm and in the project's error
-// messages, so `ncinterp send`, the board simulation and the tests read them one way.
+// Idea: the board sends fixed-layout hex lines ("B 0000C 1E240 FFC18"), cheap in hardware;
+// the host parses them here and shows them in mm and in the project's error messages, so
+// `ncinterp send`, the board simulation and the tests read them one way. The layout, the
+// link's special bytes and the board's error codes are the ones of
+// sw/host/tape/board_link.def, which the RTL's constants come from too.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -9,15 +11,35 @@
 
 namespace ncinterp::board {
 
-// Board-level error codes (above the interpolator's 4-bit TapeError codes).
-enum class BoardError : uint8_t { kFifoOverflow = 0x10, kFraming = 0x11, kStepOverrun = 0x12 };
+#define BOARD_LINK_BYTE(name, byte, meaning) inline constexpr uint8_t kLink##name = byte;
+#define BOARD_ERROR(name, code, message)
+#define BOARD_STATUS(name, letter, meaning) inline constexpr char kStatus##name = letter;
+#define BOARD_STATUS_DIGITS(n) inline constexpr unsigned kStatusDigits = n;
+#include "board_link.def"
+#undef BOARD_LINK_BYTE
+#undef BOARD_ERROR
+#undef BOARD_STATUS
+#undef BOARD_STATUS_DIGITS
+
+// Board-level error codes (above the interpolator's TapeError codes).
+enum class BoardError : uint8_t {
+#define BOARD_LINK_BYTE(name, byte, meaning)
+#define BOARD_ERROR(name, code, message) k##name = code,
+#define BOARD_STATUS(name, letter, meaning)
+#define BOARD_STATUS_DIGITS(n)
+#include "board_link.def"
+#undef BOARD_LINK_BYTE
+#undef BOARD_ERROR
+#undef BOARD_STATUS
+#undef BOARD_STATUS_DIGITS
+};
 
 struct StatusLine {
-  char kind = 0;       // 'B' block ended, 'D' program done, 'E' error
-  uint8_t code = 0;    // error code ('E')
-  uint32_t block = 0;  // N
-  int64_t x = 0, y = 0;  // position, BLU ('B', 'D')
-  uint32_t offset = 0;   // frame offset ('E')
+  char kind = 0;         // kStatusBlock, kStatusDone or kStatusError
+  uint8_t code = 0;      // error code (kStatusError)
+  uint32_t block = 0;    // N
+  int64_t x = 0, y = 0;  // position, BLU (kStatusBlock, kStatusDone)
+  uint32_t offset = 0;   // frame offset (kStatusError), modulo 16^kStatusDigits
 };
 
 // A line without its CR LF; nullopt when it is not a status line.
@@ -28,9 +50,5 @@ std::string board_error_message(uint8_t code);
 
 // In words: "block N12 ended at X1.234 Y-0.500 mm", "error in block N3 at offset 57: ...".
 std::string describe(const StatusLine& s, unsigned frac_digits);
-
-// The EOT frame that ends the tape (EOT, 0x04, with its ISO 840 parity bit).
-inline constexpr uint8_t kEndOfTapeFrame = 0x84;
-inline constexpr uint8_t kXon = 0x11, kXoff = 0x13;
 
 }  // namespace ncinterp::board

@@ -74,6 +74,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["reader_agrees"] = agree;
   if (const auto e = play_error(r, reader_error))
     j["error"] = {{"block", e->block}, {"offset", e->offset}, {"message", e->message}};
+  if (s.error && j.contains("error")) j["error"]["code"] = s.error_code;
   return j;
 }
 

@@ -39,7 +39,7 @@ int run(const BitstreamArgs& a) {
 void setup(CLI::App& app) {
   auto args = std::make_shared<BitstreamArgs>();
   CLI::App* cmd = app.add_subcommand("bitstream", "Build a board's bitstream (yosys, nextpnr-ice40, icepack)");
-  cmd->add_option("--board", args->board, "Board: icestick (HX1K) or icebreaker (UP5K)")
+  cmd->add_option("--board", args->board, "Board: icestick (HX1K, the lines-only core) or icebreaker (UP5K)")
       ->check(CLI::IsMember({"icestick", "icebreaker"}))
       ->required();
   cmd->add_option("-o,--output", args->out, "Bitstream file (.bin, for iceprog)")->required();

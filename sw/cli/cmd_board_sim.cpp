@@ -11,6 +11,7 @@
 
 #include "atomic_file.h"
 #include "board_sim.h"
+#include "boards.h"
 #include "command_registry.h"
 
 namespace ncinterp::cli {
@@ -24,8 +25,7 @@ struct BoardSimArgs {
 
 int run(BoardSimArgs& a) {
   board::BoardSimOptions& o = a.options;
-  // The iCEstick's FTDI channel B has CTS wired; the iCEBreaker's has only RX and TX.
-  if (a.flow.empty()) a.flow = o.board == "icestick" ? "rtscts" : "xonxoff";
+  if (a.flow.empty()) a.flow = board::board_named(o.board).flow;
   o.flow = a.flow == "rtscts" ? board::Flow::kRtsCts : board::Flow::kXonXoff;
   const board::BoardSimResult r = board::run_board_sim(o, [&](const std::string& path) {
     std::printf("board-sim: %s on %s (%g Hz, %u baud, %s)\n", o.board.c_str(), path.c_str(), o.clock_hz,

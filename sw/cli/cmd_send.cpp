@@ -86,7 +86,7 @@ int run(const SendArgs& a) {
   const speed_t speed = speed_for(a.baud);
   std::vector<uint8_t> frames = tape::load_frames(a.tape);
   const size_t tape_frames = frames.size();
-  frames.push_back(board::kEndOfTapeFrame);
+  frames.push_back(board::kLinkEndOfTape);
   const unsigned frac_digits = interp_config(12e6).frac_digits;
   Port port(a.port, speed, a.flow == "rtscts");
   const bool tty = isatty(STDERR_FILENO);
@@ -125,7 +125,7 @@ int run(const SendArgs& a) {
       if (n > 0) last_moved = std::chrono::steady_clock::now();
       for (ssize_t i = 0; i < n; ++i) {
         const uint8_t b = buf[i];
-        if (b == board::kXon || b == board::kXoff || b == '\r') continue;
+        if (b == board::kLinkXon || b == board::kLinkXoff || b == '\r') continue;
         if (b != '\n') {
           line += static_cast<char>(b);
           continue;

@@ -17,6 +17,7 @@
 
 #include "output_set.h"
 #include "command_registry.h"
+#include "boards.h"
 #include "firststage.h"
 #include "inputs/contour_inputs.h"
 #include "measure/deviation_meter.h"
@@ -29,6 +30,7 @@ using namespace ncinterp::firststage;
 
 struct TapeArgs {
   std::string input, output, report;
+  std::string board;  // the tape is meant for this board (boards.h): refused if it cannot play it
   std::string arcs = "chords", side = "left";
   FirstStageOptions options;
   double airfoil_chord_mm = 100.0;
@@ -43,11 +45,35 @@ nlohmann::json mm_point(GridPoint g, double blu_mm) {
   return nlohmann::json::array({g.x * blu_mm, g.y * blu_mm});
 }
 
+// Why the board's interpolator (boards.h) cannot play a tape written with these options,
+// or "" when it can.
+std::string board_refusal(const board::Board& b, const FirstStageOptions& o) {
+  const InterpConfig cfg = board::board_interp_config(b, b.clock_hz);
+  const tape::Format f = tape_format(o), want = tape_format_of(cfg);
+  const std::string board = "--board " + b.name + ": ";
+  if (o.arcs_circle && !b.circle_mode)
+    return board + "its interpolator is built without circle mode (lines only, to fit the " + b.part +
+           "): write the arcs as chords (--arcs chords)";
+  if (f.inc_width != want.inc_width)
+    return board + "its increment registers are " + std::to_string(want.inc_width) + " bits: --width " +
+           std::to_string(want.inc_width);
+  if (f.frac_digits != want.frac_digits)
+    return board + "it counts in BLU of 10^-" + std::to_string(want.frac_digits) + " mm: --blu " +
+           (want.frac_digits == 3 ? std::string("0.001") : "1e-" + std::to_string(want.frac_digits));
+  if (f.feed_width > want.feed_width)
+    return board + "its F register is " + std::to_string(want.feed_width) + " bits";
+  return "";
+}
+
 int run(TapeArgs a) {
   FirstStageOptions& o = a.options;
   o.arcs_circle = a.arcs == "circle";
   o.side_left = a.side == "left";
   validate_options(o);
+  if (!a.board.empty()) {
+    const std::string why = board_refusal(board::board_named(a.board), o);
+    if (!why.empty()) throw std::invalid_argument(why);
+  }
   // Every output reserved before the work: a bad output path fails now, and a failure
   // later leaves none of them.
   OutputSet outputs;
@@ -200,6 +226,10 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
                   "G-code with Z: XY moves at or below this Z are the cut, the rest traverses, mm "
                   "(default: the lowest Z of the program)");
   cmd->add_option("--report", args->report, "write a JSON report");
+  cmd->add_option("--board", args->board,
+                  "the tape is for this board (icestick: lines only; icebreaker): refused, with the "
+                  "reason, when its interpolator cannot play it")
+      ->check(CLI::IsMember({"icestick", "icebreaker"}));
   cmd->callback([args] {
     try {
       run(*args);

@@ -101,14 +101,33 @@ TEST_F(BoardCli, GearLinesThroughThePtyMatchPlay) {
   EXPECT_NE(send_out_.find("block N1 ended"), std::string::npos) << send_out_;
 }
 
+// Arcs play on the iCEBreaker, whose core has circle mode.
 TEST_F(BoardCli, CircleArcsThroughThePtyMatchPlay) {
   const std::string tape = kExamples + "/circle_r50.nc";
   const nlohmann::json p = play(tape);
-  ASSERT_EQ(send_to_board(tape, "--board icestick", "--flow rtscts"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(send_to_board(tape, "--board icebreaker", "--flow rtscts"), 0) << send_err_ << board_err_;
   ASSERT_EQ(board_code_, 0) << board_err_;
   expect_same_motion(p);
   EXPECT_EQ(board_["frames_read"], p["frames"]);
   EXPECT_EQ(board_["final_position_blu"]["x"], 0);
+}
+
+// The iCEstick's core is built without circle mode: an arc tape stops at its first arc
+// block with the named error and no pulse from it; `tape --board icestick` refuses to
+// write one, saying why.
+TEST_F(BoardCli, ArcsOnTheLinesOnlyIcestickStopWithTheirOwnError) {
+  const std::string tape = kExamples + "/circle_r50.nc";
+  EXPECT_EQ(send_to_board(tape, "--board icestick", ""), 1);
+  EXPECT_NE(send_err_.find("without circle mode"), std::string::npos) << send_err_;
+  EXPECT_EQ(board_code_, 1);
+  EXPECT_EQ(board_["status"], "error");
+  EXPECT_EQ(board_["error"]["code"], 13);
+  EXPECT_EQ(board_["blocks"], 0);
+  EXPECT_EQ(run("tape " + kExamples + "/contours/circle_r50.json -o " + path("c.tape") +
+                " --arcs circle --board icestick"), 1);
+  EXPECT_NE(stderr_.find("--board icestick: its interpolator is built without circle mode"),
+            std::string::npos) << stderr_;
+  EXPECT_FALSE(fs::exists(path("c.tape")));
 }
 
 TEST_F(BoardCli, XonXoffFlowControlLosesNoFrame) {

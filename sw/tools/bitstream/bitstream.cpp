@@ -25,10 +25,13 @@ std::string yosys_script(const BoardTarget& b, const std::string& json) {
   std::string s = "read_verilog -sv -I\"" + std::string(build::kBoardRtlDir) + "\"";
   for (const char* f : build::kRtlSources) s += std::string(" \"") + f + "\"";
   for (const char* f : build::kBoardSources) s += std::string(" \"") + f + "\"";
-  s += "; chparam -set LedActiveLow " + std::string(b.led_active_low ? "1" : "0") + " board_top";
+  s += "; chparam -set LedActiveLow " + std::string(b.board.led_active_low ? "1" : "0") +
+       " -set BitSerial " + (b.board.arch == Arch::kSerial ? "1" : "0") + " -set CircleMode " +
+       (b.board.circle_mode ? "1" : "0") + " board_top";
   // The project's synth_ice40 options (-abc9, timing-driven LUT mapping, is what makes 12 MHz
   // on the UP5K, docs/board.md); -dsp where the part has multipliers.
-  s += "; synth_ice40 " + std::string(build::kSynthIce40Options) + (b.dsp ? " -dsp" : "") + " -top board_top -json \"" +
+  s += "; synth_ice40 " + std::string(build::kSynthIce40Options) + (b.board.dsp ? " -dsp" : "") +
+       " -top board_top -json \"" +
        json + "\"";
   return s;
 }
@@ -36,11 +39,8 @@ std::string yosys_script(const BoardTarget& b, const std::string& json) {
 }  // namespace
 
 BoardTarget board_target(const std::string& name) {
-  const std::string dir = build::kBoardRtlDir;
-  if (name == "icestick") return {name, "HX1K", {"--hx1k", "--package", "tq144"}, dir + "/icestick.pcf", 12, false, false};
-  if (name == "icebreaker")
-    return {name, "UP5K", {"--up5k", "--package", "sg48"}, dir + "/icebreaker.pcf", 12, true, true};
-  throw std::invalid_argument("unknown board '" + name + "' (icestick, icebreaker)");
+  const board::Board& b = board::board_named(name);
+  return {b, {b.pnr_part, "--package", b.package}, std::string(build::kBoardRtlDir) + "/" + b.name + ".pcf"};
 }
 
 BitstreamResult build_bitstream(const BoardTarget& b, const std::string& bin_path, const std::string& work_dir,
@@ -50,8 +50,8 @@ BitstreamResult build_bitstream(const BoardTarget& b, const std::string& bin_pat
   using Failure = BitstreamResult::Failure;
   r.failure = Failure::kTool;  // until the verdict
   std::filesystem::create_directories(work_dir);
-  const std::string json = work_dir + "/" + b.name + ".json";
-  const std::string asc = work_dir + "/" + b.name + ".asc";
+  const std::string json = work_dir + "/" + b.board.name + ".json";
+  const std::string asc = work_dir + "/" + b.board.name + ".asc";
 
   const std::string ylog = work_dir + "/yosys.log";
   const ProcessOutcome y = sweep::run_process({"yosys", "-p", yosys_script(b, json)}, ylog);
@@ -61,7 +61,7 @@ BitstreamResult build_bitstream(const BoardTarget& b, const std::string& bin_pat
   }
 
   std::ostringstream freq;
-  freq << b.clock_mhz;
+  freq << b.clock_mhz();
   // Placement is seeded: at this utilisation the Fmax varies by a few % from seed to seed,
   // so seeds 1, 2, ... are tried until one meets the board clock (each run's log is kept).
   double best_fmax = 0;
@@ -81,8 +81,8 @@ BitstreamResult build_bitstream(const BoardTarget& b, const std::string& bin_pat
     if (rep.logic_cells_available) r.logic_cells_available = static_cast<unsigned>(*rep.logic_cells_available);
     // Whether it fits does not depend on the seed.
     if (r.logic_cells && r.logic_cells_available && *r.logic_cells > *r.logic_cells_available) {
-      r.message = b.name + ": does not fit: the design needs " + std::to_string(*r.logic_cells) +
-                  " logic cells, the " + b.part + " has " + std::to_string(*r.logic_cells_available);
+      r.message = b.board.name + ": does not fit: the design needs " + std::to_string(*r.logic_cells) +
+                  " logic cells, the " + b.board.part + " has " + std::to_string(*r.logic_cells_available);
       r.failure = Failure::kDesign;
       return r;
     }
@@ -96,21 +96,21 @@ BitstreamResult build_bitstream(const BoardTarget& b, const std::string& bin_pat
     }
     best_fmax = std::max(best_fmax, *rep.fmax_mhz);
     r.fmax_mhz = rep.fmax_mhz;
-    if (*rep.fmax_mhz >= b.clock_mhz) break;
+    if (*rep.fmax_mhz >= b.clock_mhz()) break;
   }
   std::ostringstream cells;
-  cells << b.name << ": " << (r.logic_cells ? std::to_string(*r.logic_cells) : "?") << " of "
+  cells << b.board.name << ": " << (r.logic_cells ? std::to_string(*r.logic_cells) : "?") << " of "
         << (r.logic_cells_available ? std::to_string(*r.logic_cells_available) : "?") << " logic cells of the "
-        << b.part << ", Fmax ";
+        << b.board.part << ", Fmax ";
   if (seed > seeds) {
     r.fmax_mhz = best_fmax;
-    cells << best_fmax << " MHz at best over placement seeds 1.." << seeds << " (board clock " << b.clock_mhz
+    cells << best_fmax << " MHz at best over placement seeds 1.." << seeds << " (board clock " << b.clock_mhz()
           << " MHz): misses timing";
     r.message = cells.str();
     r.failure = Failure::kDesign;
     return r;
   }
-  cells << *r.fmax_mhz << " MHz (board clock " << b.clock_mhz << " MHz, placement seed " << seed << ")";
+  cells << *r.fmax_mhz << " MHz (board clock " << b.clock_mhz() << " MHz, placement seed " << seed << ")";
 
   const std::string ilog = work_dir + "/icepack.log";
   const ProcessOutcome i = sweep::run_process({"icepack", asc, bin_path}, ilog);

@@ -12,16 +12,17 @@
 #include <string>
 #include <vector>
 
+#include "boards.h"
+
 namespace ncinterp::bitstream {
 
+// A board (sc_model/board/boards.h: part, clock, the interpolator's configuration) and
+// where its tools' inputs are.
 struct BoardTarget {
-  std::string name;                   // "icestick"
-  std::string part;                   // "HX1K"
+  board::Board board;
   std::vector<std::string> pnr_args;  // --hx1k --package tq144
   std::string pcf;                    // rtl/board/<name>.pcf
-  double clock_mhz = 12;
-  bool dsp = false;                   // synth_ice40 -dsp (UP5K multipliers)
-  bool led_active_low = false;        // board_top's LedActiveLow
+  double clock_mhz() const { return board.clock_hz / 1e6; }
 };
 
 // The boards this build knows; throws std::invalid_argument for another name.

@@ -1,4 +1,5 @@
-// The board's status lines (rtl/board/status_line.sv layout) parsed and worded by the host.
+// The board's status lines (rtl/board/status_line.sv layout, sw/host/tape/board_link.def)
+// parsed and worded by the host: a position field is two's complement in 20 bits.
 #include <gtest/gtest.h>
 
 #include "status_text.h"
@@ -7,14 +8,14 @@ namespace ncinterp::board {
 namespace {
 
 TEST(StatusText, ParsesBlockDoneAndErrorLines) {
-  const auto b = parse_status_line("B 00 0000C 0001E240 FFFFFC18");
+  const auto b = parse_status_line("B 0000C 1E240 FFC18");
   ASSERT_TRUE(b);
   EXPECT_EQ(b->kind, 'B');
   EXPECT_EQ(b->block, 12u);
   EXPECT_EQ(b->x, 123456);
   EXPECT_EQ(b->y, -1000);
   EXPECT_EQ(describe(*b, 3), "block N12 ended at X123.456 Y-1.000 mm");
-  const auto e = parse_status_line("E 01 00003 00000039 00000000");
+  const auto e = parse_status_line("E 00003 00039 00001");
   ASSERT_TRUE(e);
   EXPECT_EQ(e->code, 1);
   EXPECT_EQ(e->offset, 57u);
@@ -23,8 +24,8 @@ TEST(StatusText, ParsesBlockDoneAndErrorLines) {
 }
 
 TEST(StatusText, RejectsOtherText) {
-  for (const char* s : {"", "hello", "B 00 0000C 0001E240 FFFFFC1", "X 00 0000C 0001E240 FFFFFC18",
-                        "B 00 0000c 0001E240 FFFFFC18", "B 00 0000C 0001E240 FFFFFC18 "})
+  for (const char* s : {"", "hello", "B 0000C 1E240 FFC1", "X 0000C 1E240 FFC18", "B 0000c 1E240 FFC18",
+                        "B 0000C 1E240 FFC18 ", "E 00003 00039 00100", "B 0000C-1E240 FFC18"})
     EXPECT_FALSE(parse_status_line(s)) << s;
 }
 

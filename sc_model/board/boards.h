@@ -1,0 +1,38 @@
+// The boards the project builds for, one line each: the one definition that `ncinterp
+// bitstream`, `board-sim`, `send` and `tape --board` read.
+// Idea: a board is its part and pins, its clock, its USB-serial chip's flow control, and
+// the interpolator configuration that fits its part (arch, circle mode): the iCEstick's
+// HX1K holds the whole board only with the lines-only core (docs/board.md), the
+// iCEBreaker's UP5K the whole interpolator.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "interp_ports.h"
+
+namespace ncinterp::board {
+
+struct Board {
+  std::string name;            // "icestick"
+  std::string part;            // "HX1K"
+  std::string pnr_part;        // nextpnr-ice40's option: "--hx1k"
+  std::string package;         // "tq144"
+  double clock_hz = 12e6;      // the oscillator
+  bool dsp = false;            // the part has multipliers (synth_ice40 -dsp)
+  bool led_active_low = false; // board_top's LedActiveLow
+  std::string flow;            // what its USB-serial chip honours: "rtscts" or "xonxoff"
+  Arch arch = Arch::kSerial;   // board_top's BitSerial
+  bool circle_mode = true;     // board_top's CircleMode
+};
+
+const std::vector<Board>& boards();
+// The board of that name; throws std::invalid_argument naming the boards otherwise.
+const Board& board_named(const std::string& name);
+// "icestick, icebreaker".
+std::string board_names();
+
+// The interpolator as board_core builds it for the board at clock_hz: its arch and circle
+// mode, and the widths its status line shows (PosWidth, SeqWidth, OffsetWidth: 20 bits).
+InterpConfig board_interp_config(const Board& b, double clock_hz);
+
+}  // namespace ncinterp::board
