@@ -32,6 +32,7 @@ package interp_pkg;
   // Motion codes: the G word's number, stored in a block as it is.
   localparam int MotionWidth = 2;
   typedef enum logic [MotionWidth-1:0] {
+    MotionRapid  = 2'd0,  // G00
     MotionLine   = 2'd1,  // G01
     MotionArcCw  = 2'd2,  // G02
     MotionArcCcw = 2'd3   // G03
@@ -40,9 +41,15 @@ package interp_pkg;
   // G and M codes (a code is <= 99, the word parser's limit: 7 bits hold it).
   // A G code that is a motion (tape_motions.def).
   function automatic logic g_motion(input logic [6:0] code);
-    g_motion = code == 7'd1
+    g_motion = code == 7'd0
+               || code == 7'd1
                || code == 7'd2
                || code == 7'd3;
+  endfunction
+  // A motion code that is a circular arc; the others are straight.
+  function automatic logic motion_is_arc(input logic [MotionWidth-1:0] motion);
+    motion_is_arc = motion == 2'd2
+                    || motion == 2'd3;
   endfunction
   // A G code that states what the interpolator always does (tape_codes.def).
   function automatic logic g_setting(input logic [6:0] code);

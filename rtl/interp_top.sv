@@ -47,8 +47,10 @@ module interp_top #(
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
-  // Static configuration: 60 * f_clk * 10^FeedFracDigits.
+  // Static configuration: 60 * f_clk * 10^FeedFracDigits, and the feed step S of a rapid
+  // traverse (G00): the rapid rate in BLU/min, times 10^FeedFracDigits.
   input  logic [ModulusWidth-1:0] feed_modulus_i,
+  input  logic [ModulusWidth-1:0] rapid_step_i,
   // Tape reader.
   input  logic [7:0]              frame_i,
   input  logic                    frame_valid_i,
@@ -121,9 +123,10 @@ module interp_top #(
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
-    .StepWidth(StepWidth), .BitSerial(BitSerial), .CircleMode(CircleMode)
+    .StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial),
+    .CircleMode(CircleMode)
   ) u_decoder (
-    .clk_i, .rst_ni,
+    .clk_i, .rst_ni, .rapid_step_i,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .blk_valid_o(dec_valid), .blk_ready_i(buf_ready), .blk_o(dec_block),
     .end_o(dec_end), .tape_ended_o(dec_tape_ended), .err_o(dec_err), .err_code_o(dec_err_code),
@@ -141,7 +144,7 @@ module interp_top #(
     .out_valid_o(next_valid), .out_block_o(next_block), .out_play_o(play_step)
   );
 
-  assign next_arc = next_block.motion != interp_pkg::MotionLine;
+  assign next_arc = interp_pkg::motion_is_arc(next_block.motion);
 
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || finished);

@@ -42,6 +42,8 @@ module tape_decoder #(
   // The feed step S: its low StepWidth bits and whether it reached 2^StepWidth
   // (interp_top.sv: any S that large saturates the block).
   parameter int StepWidth      = FeedWidth + IncWidth + 1,
+  // rapid_step_i's width (interp_top's feed modulus width).
+  parameter int ModulusWidth   = 48,
   // The per-block arithmetic in parallel (0) or bit-serial (1, the board's choice): the
   // arc's dry run (arc_prepare.sv) and each digit's x10 + d (tape_word_parser.sv).
   parameter bit BitSerial      = 1'b0,
@@ -51,7 +53,7 @@ module tape_decoder #(
 ) (
   // The ports are declared below, after block_t (block_record.svh), which the block's
   // port has as its type and which needs the parameters above.
-  clk_i, rst_ni, frame_i, frame_valid_i, tape_end_i, frame_ready_o,
+  clk_i, rst_ni, rapid_step_i, frame_i, frame_valid_i, tape_end_i, frame_ready_o,
   blk_valid_o, blk_ready_i, blk_o,
   end_o, tape_ended_o, err_o, err_code_o, err_block_o, err_offset_o
 );
@@ -61,6 +63,8 @@ module tape_decoder #(
 
   input  logic                   clk_i;
   input  logic                   rst_ni;
+  // A rapid traverse's S (interp_top's static rapid_step_i).
+  input  logic [ModulusWidth-1:0] rapid_step_i;
   // Tape reader.
   input  logic [7:0]             frame_i;
   input  logic                   frame_valid_i;
@@ -141,7 +145,7 @@ module tape_decoder #(
   // shifts_q: a line's doublings still to do.
   logic [StepWidth-1:0] step_q, step_d, step_addend, step_sum;
   logic                 step_over_q, step_over_d, feed_in_q, feed_in_d, step_carry, feed_over,
-                        step_add;
+                        step_add, rapid;
   logic [KWidth-1:0]    shifts_q, shifts_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
@@ -207,7 +211,7 @@ module tape_decoder #(
   );
 
   assign preparing = state_q == StPrepare;
-  assign in_arc    = CircleMode && preparing && motion_q != interp_pkg::MotionLine;
+  assign in_arc    = CircleMode && preparing && interp_pkg::motion_is_arc(motion_q);
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
@@ -223,7 +227,7 @@ module tape_decoder #(
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, word_refusal,
      step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
-     step_add} = 'x;
+     step_add, rapid} = 'x;
     word_commit = 1'b0;
     clear_block = 1'b0;
     if (update) begin
@@ -285,7 +289,7 @@ module tape_decoder #(
                         motion_d = word_value[interp_pkg::MotionWidth-1:0];
                         motion_blk_d = 1'b1;
                         // Without circle mode an arc's G word is refused where it stands.
-                        if (!CircleMode && motion_d != interp_pkg::MotionLine) begin
+                        if (!CircleMode && interp_pkg::motion_is_arc(motion_d)) begin
                           word_ok = 1'b0;
                           word_refusal = interp_pkg::ErrNoCircleMode;
                         end
@@ -321,7 +325,8 @@ module tape_decoder #(
                     end
                   end else if (ch == interp_pkg::ChLf) begin
                     if (motion_blk_d) begin
-                      if (feed_d == '0) begin
+                      // G00 plays at the rapid rate: it needs no F.
+                      if (feed_d == '0 && motion_d != interp_pkg::MotionRapid) begin
                         fail = 1'b1;
                         fail_code = interp_pkg::ErrMissingFeed;
                       end else begin
@@ -331,7 +336,7 @@ module tape_decoder #(
                         state_d     = StPrepare;
                         step_d      = '0;
                         step_over_d = 1'b0;
-                        feed_in_d   = motion_d == interp_pkg::MotionLine;
+                        feed_in_d   = !interp_pkg::motion_is_arc(motion_d);
                       end
                     end else begin
                       if (end_blk_d) state_d = StEnd;
@@ -361,14 +366,19 @@ module tape_decoder #(
           fail_offset = offset - 1'b1;  // the digit, the last frame processed
         end
       end else if (preparing) begin
-        // The one adder: S + F (a line's first clock, an arc's iterations) or S + S (a
-        // line's doublings). An F wider than S over-runs S by itself.
-        step_addend = !in_arc && !feed_in_q ? step_q : StepWidth'(feed_q);
+        // The one adder: S + F (a line's first clock, an arc's iterations), S + the rapid
+        // step (a rapid traverse's first clock) or S + S (a line's doublings). An addend
+        // wider than S over-runs S by itself.
+        rapid       = motion_q == interp_pkg::MotionRapid;
+        step_addend = !in_arc && !feed_in_q ? step_q
+                    : rapid ? StepWidth'(rapid_step_i) : StepWidth'(feed_q);
         feed_over   = !in_arc && !feed_in_q ? 1'b0
-                                            : ((FeedWidth + StepWidth)'(feed_q) >> StepWidth) != '0;
+                    : rapid ? ((ModulusWidth + StepWidth)'(rapid_step_i) >> StepWidth) != '0
+                            : ((FeedWidth + StepWidth)'(feed_q) >> StepWidth) != '0;
         {step_carry, step_sum} = {1'b0, step_q} + {1'b0, step_addend};
-        // A line adds F at its first clock, then doubles once per clock (S = F << k); an
-        // arc adds F once per dry-run iteration (S = F * N).
+        // A line adds F at its first clock, then doubles once per clock (S = F << k); a
+        // rapid traverse adds its step once (its k is the line's, its S the same whatever
+        // its length); an arc adds F once per dry-run iteration (S = F * N).
         step_add = in_arc ? arc_iterate : feed_in_q || shifts_q != '0;
         if (step_add) begin
           step_d      = step_sum;
@@ -382,7 +392,7 @@ module tape_decoder #(
             shifts_d = shifts_q - 1'b1;
           end else begin
             k_d      = bit_length(dx_q | dy_q);
-            shifts_d = k_d;
+            shifts_d = rapid ? '0 : k_d;
           end
         end else if (arc_done) begin
           if (arc_err) begin

@@ -5,7 +5,7 @@
 // previous one was taken and stays valid until frame_valid & frame_ready at an edge. Frames
 // come from a hex file ($readmemh). Stops at done, error or +max_cycles and prints the
 // cycle count and final position, which the benchmark checks against the golden model.
-// Plusargs: +frames=FILE +nframes=N +cpf=C +modulus=M +max_cycles=K; the arch is the
+// Plusargs: +frames=FILE +nframes=N +cpf=C +modulus=M +rapid=R +max_cycles=K; the arch is the
 // parameter BitSerial (iverilog -Pinterp_tb.BitSerial=0 for the parallel one).
 `timescale 1ns / 1ps
 module interp_tb #(
@@ -15,7 +15,7 @@ module interp_tb #(
 
   logic [7:0] frames [MaxFrames];
   string      path;
-  longint     nframes, cpf, modulus, max_cycles;
+  longint     nframes, cpf, modulus, rapid, max_cycles;
 
   logic        clk = 1'b0;
   logic        rst_n = 1'b0;
@@ -33,7 +33,7 @@ module interp_tb #(
   assign tape_end    = next_frame >= nframes;
 
   interp_top #(.BitSerial(BitSerial)) dut (
-    .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]),
+    .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]), .rapid_step_i(rapid[47:0]),
     .frame_i(frame), .frame_valid_i(frame_valid), .tape_end_i(tape_end),
     .frame_ready_o(frame_ready),
     .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y), .dir_y_o(dir_y),
@@ -45,8 +45,9 @@ module interp_tb #(
   initial begin
     if (!$value$plusargs("frames=%s", path) || !$value$plusargs("nframes=%d", nframes) ||
         !$value$plusargs("cpf=%d", cpf) || !$value$plusargs("modulus=%d", modulus) ||
+        !$value$plusargs("rapid=%d", rapid) ||
         !$value$plusargs("max_cycles=%d", max_cycles)) begin
-      $display("usage: +frames=FILE +nframes=N +cpf=C +modulus=M +max_cycles=K");
+      $display("usage: +frames=FILE +nframes=N +cpf=C +modulus=M +rapid=R +max_cycles=K");
       $finish;
     end
     if (nframes > 0) $readmemh(path, frames, 0, nframes - 1);

@@ -180,7 +180,8 @@ Row measure_icarus(const Options& o, const std::vector<uint8_t>& frames, uint64_
   if (run_command(compile, &log) != 0) throw std::runtime_error("iverilog failed:\n" + log);
   std::ostringstream cmd;
   cmd << "vvp -n " << vvp.string() << " +frames=" << hex.string() << " +nframes=" << frames.size()
-      << " +cpf=" << cpf << " +modulus=" << cfg.feed_modulus << " +max_cycles=" << o.icarus_cycles;
+      << " +cpf=" << cpf << " +modulus=" << cfg.feed_modulus << " +rapid=" << cfg.rapid_step
+      << " +max_cycles=" << o.icarus_cycles;
   std::string out;
   const double c0 = children_cpu(), w0 = wall_now();
   if (run_command(cmd.str(), &out) != 0) throw std::runtime_error("vvp failed:\n" + out);

@@ -247,7 +247,7 @@ int main(int argc, char** argv) {
           const sweep::RtlVariant v{cfg.inc_width, cfg.frac_digits, arch, cfg.circle_mode};
           auto& [variant, batch] = queued[v.name()];
           variant = v;
-          const fs::path dir = fs::path(cache) / "tapes" / v.name();
+          const fs::path dir = fs::path(cache) / "tapes" / v.key();
           fs::create_directories(dir);
           const std::string tape = (dir / (c.name + ".tape")).string();
           write_file_atomically(tape, regression::make_tape(c));
@@ -270,6 +270,7 @@ int main(int argc, char** argv) {
     variants.reader_cps = batch.front().c.check.reader_cps;
     variants.clock_hz = batch.front().c.check.clock_hz;
     const sweep::RtlResult r = sweep::run_rtl_variant(variants, v, tapes, &lines);
+    // "END CYCLES TAPE" or "END CYCLES TAPE: why" (the tape paths have no spaces).
     std::map<std::string, std::string> line_of;  // tape -> its line
     for (const std::string& line : lines) {
       std::istringstream in(line);

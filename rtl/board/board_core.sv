@@ -20,7 +20,7 @@
 // by), the FIFO level and the received bytes to the board simulation; a real board leaves
 // them unconnected, and synthesis removes what only they read. Static configuration comes
 // in on ports (the board tops tie them to constants): bit_cycles_i clocks per UART bit,
-// feed_modulus_i, and the stretchers' clock counts.
+// feed_modulus_i, rapid_step_i, and the stretchers' clock counts.
 // Timing: every output is a register or a function of registers.
 // Golden twins: GoldenInterp for interp_top (board-sim compares nothing itself: it replays
 // the outputs into the play monitors), the UART and stretcher models of sc_model/board/.
@@ -52,6 +52,7 @@ module board_core #(
   input  logic        rst_ni,
   input  logic [DivWidth-1:0] bit_cycles_i,
   input  logic [ModulusWidth-1:0] feed_modulus_i,
+  input  logic [ModulusWidth-1:0] rapid_step_i,
   input  logic [StretchWidth-1:0] setup_cycles_i,
   input  logic [StretchWidth-1:0] pulse_cycles_i,
   input  logic [StretchWidth-1:0] low_cycles_i,
@@ -130,7 +131,7 @@ module board_core #(
     .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i,
+    .feed_modulus_i, .rapid_step_i,
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
     .frame_ready_o(frame_ready),
     .step_x_o(i_step_x), .dir_x_o(i_dir_x), .step_y_o(i_step_y), .dir_y_o(i_dir_y),

@@ -24,7 +24,9 @@ module board_top #(
   parameter int     LedActiveLow = 0,
   // The interpolator's configuration (interp_top's BitSerial, CircleMode).
   parameter bit     BitSerial  = 1'b1,
-  parameter bit     CircleMode = 1'b1
+  parameter bit     CircleMode = 1'b1,
+  // The machine's rapid rate (G00), mm/min.
+  parameter int     RapidMmMin = 5000
 ) (
   input  logic clk_i,
   input  logic uart_rx_i,
@@ -52,6 +54,8 @@ module board_top #(
   // M = 60 * ClockHz * 10^3 (FeedFracDigits 3), as wide as it needs.
   localparam longint FeedModulus  = 64'(ClockHz) * 64'd60_000;
   localparam int     ModulusWidth = $clog2(FeedModulus + 1);
+  // rapid_step_i: the rapid rate in BLU/min (FracDigits 3) times 10^3 (FeedFracDigits 3).
+  localparam longint RapidStep    = 64'(RapidMmMin) * 64'd1_000_000;
 
   // por_q: counts clocks after configuration; the core leaves reset when it saturates.
   logic [3:0] por_q = '0;
@@ -69,6 +73,7 @@ module board_top #(
   ) u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
     .bit_cycles_i(12'(BitCycles)), .feed_modulus_i(ModulusWidth'(FeedModulus)),
+    .rapid_step_i(ModulusWidth'(RapidStep)),
     .setup_cycles_i(8'(SetupCycles)), .pulse_cycles_i(8'(PulseCycles)),
     .low_cycles_i(8'(LowCycles)),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),

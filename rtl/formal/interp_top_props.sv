@@ -32,6 +32,7 @@ module interp_top_props #(
   input logic          clk_i,
   input logic          rst_ni,
   input logic [MW-1:0] feed_modulus_i,
+  input logic [MW-1:0] rapid_step_i,
   input logic [7:0]    frame_i,
   input logic          frame_valid_i,
   input logic          tape_end_i
@@ -47,7 +48,7 @@ module interp_top_props #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .PosWidth(PW),
     .SeqWidth(NW), .OffsetWidth(OW), .ModulusWidth(MW), .BitSerial(BS)
   ) u_dut (
-    .clk_i, .rst_ni, .feed_modulus_i, .frame_i, .frame_valid_i, .tape_end_i,
+    .clk_i, .rst_ni, .feed_modulus_i, .rapid_step_i, .frame_i, .frame_valid_i, .tape_end_i,
     .frame_ready_o(frame_ready), .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y),
     .dir_y_o(dir_y), .pos_x_o(pos_x), .pos_y_o(pos_y), .block_n_o(block_n), .busy_o(busy),
     .done_o(done), .error_o(error), .error_code_o(error_code), .error_block_o(error_block),
@@ -69,7 +70,7 @@ module interp_top_props #(
   logic [6:0]    f_mval_q;
   logic [3:0]    f_handed_q, f_loaded_q;
   logic [PW-1:0] f_int_x_q, f_int_y_q;
-  logic [MW-1:0] f_modulus_q;
+  logic [MW-1:0] f_modulus_q, f_rapid_q;
   logic [6:0]    ch;
   logic          take, digit;
   assign take  = frame_valid_i && frame_ready;
@@ -79,6 +80,7 @@ module interp_top_props #(
   always_ff @(posedge clk_i) begin
     f_init <= 1'b0;
     f_modulus_q <= feed_modulus_i;
+    f_rapid_q <= rapid_step_i;
     f_tape_end_q <= tape_end_i;
     if (!rst_ni) begin
       f_body_q <= 1'b0;  f_comment_q <= 1'b0;  f_m_q <= 1'b0;  f_end_q <= 1'b0;
@@ -111,7 +113,8 @@ module interp_top_props #(
 
   always_comb begin
     assume (rst_ni == !f_init);
-    if (!f_init) assume (feed_modulus_i == f_modulus_q && feed_modulus_i != '0);
+    if (!f_init) assume (feed_modulus_i == f_modulus_q && feed_modulus_i != '0 &&
+                         rapid_step_i == f_rapid_q);
     if (f_tape_end_q) assume (tape_end_i);
     if (tape_end_i) assume (!frame_valid_i);
   end

@@ -34,7 +34,8 @@ module tape_decoder_props #(
   input logic [7:0] frame_i,
   input logic       frame_valid_i,
   input logic       tape_end_i,
-  input logic       blk_ready_i
+  input logic       blk_ready_i,
+  input logic [4:0] rapid_step_i   // any static rapid step (ModulusWidth 5)
 );
 
   localparam int KWidth = $clog2(W + 1);
@@ -60,9 +61,9 @@ module tape_decoder_props #(
 
   tape_decoder #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .SeqWidth(NW),
-    .OffsetWidth(OW), .BitSerial(BitSerial)
+    .OffsetWidth(OW), .ModulusWidth(5), .BitSerial(BitSerial)
   ) u_dut (
-    .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
+    .clk_i, .rst_ni, .rapid_step_i, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
     .blk_valid_o(blk_valid), .blk_ready_i, .blk_o(block),
     .end_o(end_blk), .tape_ended_o(tape_ended), .err_o(err),
     .err_code_o(err_code), .err_block_o(err_block), .err_offset_o(err_offset)
@@ -84,8 +85,13 @@ module tape_decoder_props #(
     else if (f_low_line_q != '1) f_low_line_q <= f_low_line_q + 1'b1;
   end
 
+  // The rapid step is static configuration.
+  logic [4:0] f_rapid_q;
+  always_ff @(posedge clk_i) f_rapid_q <= rapid_step_i;
+
   always_comb begin
     assume (rst_ni == !f_init);
+    if (!f_init) assume (rapid_step_i == f_rapid_q);
     if (f_tape_end_q) assume (tape_end_i);
     if (tape_end_i) assume (!frame_valid_i);
   end

@@ -20,7 +20,9 @@ module interp_ice40_top #(
   // The per-block arithmetic bit-serial, as on the board (rtl/board/board_core.sv).
   parameter bit BitSerial   = 1'b1,
   // Circle mode built in (interp_top's CircleMode).
-  parameter bit CircleMode  = 1'b1
+  parameter bit CircleMode  = 1'b1,
+  // The machine's rapid rate (G00), mm/min.
+  parameter int RapidMmMin  = 5000
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -43,6 +45,8 @@ module interp_ice40_top #(
                                     10000;
   localparam longint FeedModulus  = 60 * ClockHz * FeedScale;
   localparam int     ModulusWidth = $clog2(FeedModulus + 1);
+  // rapid_step_i: the rapid rate in BLU/min (FracDigits 3) times 10^FeedFracDigits.
+  localparam longint RapidStep    = 64'(RapidMmMin) * 1000 * FeedScale;
 
   // Not brought out (see the header).
   /* verilator lint_off UNUSEDSIGNAL */
@@ -58,7 +62,7 @@ module interp_ice40_top #(
     .BitSerial(BitSerial), .CircleMode(CircleMode)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i(ModulusWidth'(FeedModulus)),
+    .feed_modulus_i(ModulusWidth'(FeedModulus)), .rapid_step_i(ModulusWidth'(RapidStep)),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .pos_x_o(pos_x), .pos_y_o(pos_y),

@@ -107,6 +107,7 @@ class Runner {
     Model& m = *m_;
     m.bit_cycles_i = c.bit_cycles;
     m.feed_modulus_i = c.feed_modulus;
+    m.rapid_step_i = cfg.rapid_step;
     m.setup_cycles_i = c.setup_cycles;
     m.pulse_cycles_i = c.pulse_cycles;
     m.low_cycles_i = c.low_cycles;
@@ -222,7 +223,7 @@ class Runner {
 
   // Replays the recorded outputs into the play monitor, clock by clock.
   system::PlaySummary replay(const tape::Program& program) const {
-    system::PlayMonitor monitor(program, c_.feed_modulus);
+    system::PlayMonitor monitor(program, cfg_);
     size_t next = 0;
     InterpOutputs cur;
     for (uint64_t c = 0; c <= final_cycle_; ++c) {

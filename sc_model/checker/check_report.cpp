@@ -29,7 +29,14 @@ json stat_json(const ErrorStat& s, const TrajectoryChecker& c, const Frame& f) {
 }
 
 const char* motion_name(tape::Motion m) {
-  return m == tape::Motion::kLine ? "G01" : m == tape::Motion::kArcCw ? "G02" : "G03";
+  switch (m) {
+#define TAPE_MOTION(name, code, word) \
+  case tape::Motion::k##name:         \
+    return word;
+#include "tape_motions.def"
+#undef TAPE_MOTION
+  }
+  return "?";
 }
 
 std::string fmt(const char* format, double v) {

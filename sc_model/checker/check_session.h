@@ -29,6 +29,7 @@ struct CheckSetup {
   double reader_cps = 1000.0;      // tape reader, characters per second
   unsigned pos_width = 32;         // the position counters' width (InterpConfig::pos_width)
   Arch arch = Arch::kSerial;       // the microarchitecture both engines play
+  double rapid_mm_min = kDefaultRapidMmMin;  // the machine's rapid rate (G00)
   EngineKind engine = EngineKind::kGolden;
   double tol_mm = 0.01;            // delta: the total error's bound
   // Absolute grid point of the tape start (mm); unset: the contour's start on the grid

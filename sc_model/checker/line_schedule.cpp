@@ -2,20 +2,27 @@
 #include "line_schedule.h"
 
 #include <algorithm>
+#include <cstdlib>
+
+#include "dda_serial.h"
 
 namespace ncinterp::checker {
 
-LineSchedule::LineSchedule(uint64_t dx_abs, uint64_t dy_abs, uint64_t feed, uint64_t feed_modulus,
+LineSchedule::LineSchedule(const tape::Block& b, const InterpConfig& cfg)
+    : LineSchedule(static_cast<uint64_t>(std::llabs(b.dx)), static_cast<uint64_t>(std::llabs(b.dy)),
+                   line_step(b, cfg), cfg.feed_modulus, SerialDda::player_lead_bits(cfg)) {}
+
+LineSchedule::LineSchedule(uint64_t dx_abs, uint64_t dy_abs, unsigned __int128 step, uint64_t feed_modulus,
                            unsigned lead_bits)
     : modulus_(feed_modulus ? feed_modulus : 1), lead_(lead_bits) {
-  const uint64_t big = std::max(dx_abs, dy_abs);
-  while (k_ < 63 && (big >> k_) != 0) ++k_;
+  k_ = bit_length(std::max(dx_abs, dy_abs));
   kpow_ = uint64_t{1} << k_;
   delay_ = lead_ == 0 || k_ == 0 ? 0 : k_ - 1;
-  const unsigned __int128 s = static_cast<unsigned __int128>(feed) << k_;
-  saturated_ = s << lead_ >= modulus_;
-  step_ = saturated_ ? modulus_ : static_cast<uint64_t>(s);
-  duration_ = saturated_ ? (kpow_ << lead_) + 1 : (feed ? (modulus_ + feed - 1) / feed : 0);
+  saturated_ = step << lead_ >= modulus_;
+  step_ = saturated_ ? modulus_ : static_cast<uint64_t>(step);
+  const unsigned __int128 programmed = static_cast<unsigned __int128>(modulus_) << k_;
+  duration_ = saturated_ ? (kpow_ << lead_) + 1
+                         : (step ? static_cast<uint64_t>((programmed + step - 1) / step) : 0);
 }
 
 uint64_t LineSchedule::iteration_edge(uint64_t j) const {

@@ -68,6 +68,18 @@ void ErrorStat::merge(const ErrorStat& o) {
 
 double ErrorStat::rms() const { return count ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0; }
 
+unsigned __int128 TrajectoryChecker::step_of(const ProgrammedBlock& b) const {
+  InterpConfig machine;
+  machine.rapid_step = options_.rapid_step;
+  machine.modulus_width = 64;  // the option holds the port's value already
+  return line_step(b.tape, machine);
+}
+
+LineSchedule TrajectoryChecker::schedule_of(const ProgrammedBlock& b) const {
+  return LineSchedule(static_cast<uint64_t>(std::llabs(b.tape.dx)), static_cast<uint64_t>(std::llabs(b.tape.dy)),
+                      step_of(b), options_.feed_modulus, options_.lead_bits);
+}
+
 TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
                                      ReferenceContour* reference, const CheckerOptions& options)
     : blocks_(std::move(blocks)), reference_(reference), options_(options) {
@@ -83,9 +95,12 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
                                        static_cast<double>(b.tape.feed)
                                  : 0.0;
     if (!b.is_arc()) {
-      const LineSchedule s(std::llabs(b.tape.dx), std::llabs(b.tape.dy), b.tape.feed,
-                           options_.feed_modulus, options_.lead_bits);
+      const LineSchedule s = schedule_of(b);
       r.saturated = s.saturated();
+      // M 2^k / S: for a G01 block M / F; a G00 block has no F, its S is the rapid step.
+      const double step = static_cast<double>(step_of(b));
+      r.ideal_clocks =
+          step > 0 ? std::ldexp(static_cast<double>(options_.feed_modulus), static_cast<int>(s.k())) / step : 0.0;
     }
   }
   if (reference_ && reference_->radius_blu() > 0) {
@@ -190,8 +205,7 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
   expected_dir_[1] = b.is_arc() ? b.tape.dy > 0 : b.tape.dy >= 0;
   iterations_ = 0;
   if (!b.is_arc())
-    schedule_ = LineSchedule(std::llabs(b.tape.dx), std::llabs(b.tape.dy), b.tape.feed,
-                             options_.feed_modulus, options_.lead_bits);
+    schedule_ = schedule_of(b);
   else
     r.saturated = o.feed_saturated;  // S = F N needs the dry run's N: the engine's word
   if (o.block_n != b.tape.n)

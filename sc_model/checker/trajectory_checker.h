@@ -101,6 +101,7 @@ struct CheckerOptions {
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;  // M = 60 f_clk 10^FeedFracDigits
   bool schedule = true;        // the schedule and duration rules for line blocks
   unsigned lead_bits = 0;      // log2 of the DDA's clocks per iteration (line_schedule.h)
+  uint64_t rapid_step = 0;     // S of a G00 block (InterpConfig::rapid_step_on_port())
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_bound_blu + |R1 - R0| (docs/circle-dda.md 3.2: 0.88 BLU,
   // measured on every good arc up to W = 7 and 100000 random arcs at W = 16).
@@ -163,6 +164,9 @@ class TrajectoryChecker {
   int64_t progress_[2] = {0, 0}; // pulses along the block's direction, per axis
   bool expected_dir_[2] = {true, true};
   LineSchedule schedule_;
+  // A straight block's feed step S and its schedule (line_schedule.h) on this machine.
+  unsigned __int128 step_of(const ProgrammedBlock& b) const;
+  LineSchedule schedule_of(const ProgrammedBlock& b) const;
   uint64_t iterations_ = 0;      // documented iterations due by the last clock
   uint32_t reported_ = 0;        // rules already reported in this block (bit per rule)
 

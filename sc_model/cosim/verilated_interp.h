@@ -34,7 +34,8 @@ class VerilatedInterp {
   VerilatedInterp(const InterpConfig& cfg, const InterpConfig& built)
       : context_(std::make_unique<VerilatedContext>()),
         model_(std::make_unique<Model>(context_.get(), kScope)),
-        modulus_(cfg.feed_modulus) {
+        modulus_(cfg.feed_modulus),
+        rapid_step_(cfg.rapid_step) {
     if (!cfg.same_parameters(built))
       throw std::invalid_argument(
           std::string("the verilated RTL (") + arch_name(built.arch) + ", W " +
@@ -57,6 +58,7 @@ class VerilatedInterp {
     Model& m = *model_;
     m.rst_ni = 0;
     m.feed_modulus_i = modulus_;
+    m.rapid_step_i = rapid_step_;
     m.frame_i = 0;
     m.frame_valid_i = 0;
     m.tape_end_i = 0;
@@ -124,7 +126,7 @@ class VerilatedInterp {
 
   std::unique_ptr<VerilatedContext> context_;
   std::unique_ptr<Model> model_;
-  uint64_t modulus_;
+  uint64_t modulus_, rapid_step_;
 };
 
 }  // namespace ncinterp

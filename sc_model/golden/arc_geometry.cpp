@@ -1,17 +1,13 @@
 // Geometry and checks of a quadrant arc block (see arc_geometry.h).
 #include "arc_geometry.h"
 
+#include "bit_length.h"
+
 namespace ncinterp {
 
 namespace {
 
 int sign_of(int64_t v) { return (v > 0) - (v < 0); }
-
-unsigned bit_length(uint64_t v) {
-  unsigned k = 0;
-  while (k < 64 && (v >> k) != 0) ++k;
-  return k;
-}
 
 // The votes for one sign of the quadrant (0 = no vote) must not disagree.
 bool votes_agree(int a, int b, int c) {

@@ -11,7 +11,7 @@ Arch parse_arch(const std::string& name) {
   throw std::invalid_argument("unknown arch '" + name + "' (serial or parallel)");
 }
 
-InterpConfig interp_config(double clock_hz, const tape::Format& format) {
+InterpConfig interp_config(double clock_hz, const tape::Format& format, double rapid_mm_min) {
   InterpConfig cfg;
   cfg.inc_width = format.inc_width;
   cfg.frac_digits = format.frac_digits;
@@ -20,6 +20,7 @@ InterpConfig interp_config(double clock_hz, const tape::Format& format) {
   cfg.seq_width = format.seq_width;
   cfg.circle_mode = format.circle_mode;
   cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
+  cfg.rapid_step = InterpConfig::rapid_step_for(rapid_mm_min, format.frac_digits, format.feed_frac_digits);
   return cfg;
 }
 

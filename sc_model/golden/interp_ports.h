@@ -11,6 +11,7 @@
 #include <string>
 #include <type_traits>
 
+#include "bit_length.h"
 #include "tape.h"
 #include "tape_errors.h"
 
@@ -27,8 +28,11 @@ inline const char* arch_name(Arch arch) { return arch == Arch::kSerial ? "serial
 // "serial" or "parallel"; throws std::invalid_argument naming the choices otherwise.
 Arch parse_arch(const std::string& name);
 
+// The machine's rapid rate (G00) unless a command is told another (--rapid), mm/min.
+inline constexpr double kDefaultRapidMmMin = 5000.0;
+
 // Elaboration parameters (RTL parameters of the same name) plus the static configuration
-// input feed_modulus_i, which depends on the clock frequency.
+// inputs feed_modulus_i, which depends on the clock frequency, and rapid_step_i.
 struct InterpConfig {
   unsigned inc_width = 16;        // IncWidth (W)
   unsigned frac_digits = 3;       // FracDigits: BLU = 10^-frac_digits mm
@@ -44,6 +48,10 @@ struct InterpConfig {
   bool circle_mode = true;
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
+  // rapid_step_i: the feed step S of a rapid traverse (G00), rapid_step_for(): the line's
+  // iterations come at S / M per clock, so its longer axis moves at between half and all
+  // of the rapid rate (a line of 2^k iterations moves max(|dx|, |dy|) >= 2^(k-1) BLU).
+  uint64_t rapid_step = rapid_step_for(kDefaultRapidMmMin, 3, 3);
 
   // Same elaboration parameters (everything but feed_modulus, a port): what a verilated
   // model, built with fixed parameters, requires of a configuration.
@@ -56,6 +64,19 @@ struct InterpConfig {
   }
 
   bool serial() const { return arch == Arch::kSerial; }
+  // rapid_step as the port holds it (ModulusWidth bits).
+  uint64_t rapid_step_on_port() const {
+    return modulus_width >= 64 ? rapid_step : rapid_step & ((uint64_t{1} << modulus_width) - 1);
+  }
+
+  // S of a rapid traverse at rapid_mm_min: one iteration per BLU of the longer axis at
+  // that rate, V * 10^frac_digits BLU/min as a feed step of 10^-feed_frac_digits units.
+  static constexpr uint64_t rapid_step_for(double rapid_mm_min, unsigned frac_digits,
+                                           unsigned feed_frac_digits) {
+    double scale = 1;
+    for (unsigned i = 0; i < frac_digits + feed_frac_digits; ++i) scale *= 10;
+    return static_cast<uint64_t>(rapid_mm_min * scale + 0.5);
+  }
 
   static uint64_t feed_modulus_for(double clock_hz, unsigned feed_frac_digits) {
     uint64_t scale = 1;
@@ -70,10 +91,21 @@ inline const char* engine_name(EngineKind engine) {
   return engine == EngineKind::kGolden ? "golden" : "rtl";
 }
 
+// A straight block's feed step S, the rate of its 2^k DDA iterations (k = bit length of
+// max(|dx|, |dy|)): F << k for G01, the rapid step for G00 (docs/interpolator.md 5.2). Its
+// programmed duration is M 2^k / S clocks, ceil(M / F) for G01.
+inline unsigned __int128 line_step(const tape::Block& b, const InterpConfig& cfg) {
+  if (b.motion == tape::Motion::kRapid) return cfg.rapid_step_on_port();
+  const auto magnitude = [](int64_t v) { return static_cast<uint64_t>(v < 0 ? -v : v); };
+  return static_cast<unsigned __int128>(b.feed) << bit_length(magnitude(b.dx) | magnitude(b.dy));
+}
+
 // The interpolator that plays tapes of `format` with a clock of `clock_hz`: the format's
-// widths, the other parameters at their defaults; the feed modulus for the clock. With the
-// default format, the default machine (the verilated RTL's parameters).
-InterpConfig interp_config(double clock_hz, const tape::Format& format = {});
+// widths, the other parameters at their defaults; the feed modulus for the clock, the rapid
+// step for rapid_mm_min. With the default format, the default machine (the verilated RTL's
+// parameters).
+InterpConfig interp_config(double clock_hz, const tape::Format& format = {},
+                           double rapid_mm_min = kDefaultRapidMmMin);
 // The tape format an interpolator with `cfg` decodes (the inverse of interp_config).
 tape::Format tape_format_of(const InterpConfig& cfg);
 

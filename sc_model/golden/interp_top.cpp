@@ -2,6 +2,8 @@
 // activity, status, fault hook). The hot path, tick(), is inline in interp_top.h.
 #include "interp_top.h"
 
+#include "bit_length.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -10,8 +12,6 @@ namespace ncinterp {
 namespace {
 
 uint64_t low_mask(unsigned bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
-
-unsigned bit_length(uint32_t x) { return x == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(x)); }
 
 void require(bool ok, const char* what) {
   if (!ok) throw std::invalid_argument(std::string("GoldenInterp: unsupported parameter: ") + what);

@@ -3,6 +3,8 @@
 // decision (same priorities, same offsets), in their three sections.
 #include "tape_decoder.h"
 
+#include "bit_length.h"
+
 #include <algorithm>
 
 namespace ncinterp {
@@ -26,6 +28,7 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
       seq_limit_(low_mask(cfg.seq_width)),
       offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
       step_mask_(step_mask(cfg)),
+      rapid_step_(cfg.rapid_step_on_port()),
       arc_(cfg.inc_width, cfg.serial()) {}
 
 uint64_t GoldenTapeDecoder::step_mask(const InterpConfig& cfg) {
@@ -281,11 +284,12 @@ bool GoldenTapeDecoder::commit_word(Word w) {
 
 void GoldenTapeDecoder::end_of_block(uint32_t offset) {
   if (motion_block_) {
-    if (block_.feed == 0) return fail(TapeError::kMissingFeed, offset);
+    if (block_.feed == 0 && !block_.is_rapid()) return fail(TapeError::kMissingFeed, offset);
     // Prepared first (cleared at the handoff): S starts at 0; a line adds F, then doubles
-    // it k times (k = bit length of max(|dx|, |dy|)).
+    // it k times (k = bit length of max(|dx|, |dy|)); a rapid traverse adds the rapid step
+    // once, its S whatever its length.
     const uint32_t d = block_.dx | block_.dy;
-    shifts_ = d == 0 ? 0u : 32u - static_cast<unsigned>(__builtin_clz(d));
+    shifts_ = block_.is_rapid() ? 0u : bit_length(d);
     block_.step = 0;
     block_.step_over = false;
     feed_in_ = !block_.is_arc();
@@ -306,9 +310,11 @@ void GoldenTapeDecoder::add_to_step(uint64_t addend, bool addend_over) {
 }
 
 void GoldenTapeDecoder::prepare_edge() {
-  if (!block_.is_arc()) {  // a line: S = F << k: F at the first clock, then one doubling per clock
+  if (!block_.is_arc()) {  // a line: S = F << k: F at the first clock, then one doubling per
+                           // clock; a rapid traverse: the rapid step, no doubling
     if (feed_in_) {
-      add_to_step(block_.feed, block_.feed > step_mask_);
+      const uint64_t f = block_.is_rapid() ? rapid_step_ : block_.feed;
+      add_to_step(f, f > step_mask_);
       feed_in_ = false;
     } else if (shifts_ == 0) {
       state_ = State::kHold;

@@ -30,7 +30,8 @@ struct DecodedBlock {
   uint64_t step = 0;
   bool step_over = false;
 
-  bool is_arc() const { return motion != 1; }
+  bool is_arc() const { return tape::is_arc(static_cast<tape::Motion>(motion)); }
+  bool is_rapid() const { return motion == static_cast<uint8_t>(tape::Motion::kRapid); }
   ArcWords arc_words() const {
     return ArcWords{dx, dy, i, j, dx_neg, dy_neg, i_neg, j_neg, motion == 3};
   }
@@ -106,6 +107,7 @@ class GoldenTapeDecoder {
   uint64_t inc_limit_, feed_limit_, seq_limit_;
   uint32_t offset_mask_;
   uint64_t step_mask_;  // step_mask()
+  uint64_t rapid_step_;  // rapid_step_i: a G00 block's S
 
   // Block assembly: the decoder's state.
   State state_ = State::kLeader;

@@ -21,7 +21,7 @@ double distance_to_segment(double px, double py, double dx, double dy) {
 }
 
 PathError block_path_error(const tape::Block& b, double px, double py) {
-  if (b.motion == tape::Motion::kLine)
+  if (!tape::is_arc(b.motion))
     return {distance_to_segment(px, py, static_cast<double>(b.dx), static_cast<double>(b.dy)),
             line_path_bound(b.dx, b.dy)};
   // Relative to the centre, which is at (i, j) from the block's start.
@@ -40,8 +40,17 @@ uint64_t block_pulses(const tape::Block& b) {
 
 }  // namespace
 
-PlayMonitor::PlayMonitor(const tape::Program& program, uint64_t feed_modulus)
-    : program_(program), feed_modulus_(static_cast<double>(feed_modulus)) {
+// M / F clocks, M 2^k / S for a rapid traverse (its S is the rapid step, line_step()).
+double PlayMonitor::ideal_clocks(const tape::Block& b) const {
+  const double m = static_cast<double>(cfg_.feed_modulus);
+  if (b.motion != tape::Motion::kRapid) return b.feed ? m / static_cast<double>(b.feed) : 0.0;
+  const double s = static_cast<double>(line_step(b, cfg_));
+  const int k = static_cast<int>(bit_length(static_cast<uint64_t>(std::max(std::llabs(b.dx), std::llabs(b.dy)))));
+  return s > 0 ? std::ldexp(m, k) / s : 0.0;
+}
+
+PlayMonitor::PlayMonitor(const tape::Program& program, const InterpConfig& cfg)
+    : program_(program), cfg_(cfg) {
   for (const tape::Block& b : program_.blocks) {
     s_.expected_x += b.dx;
     s_.expected_y += b.dy;
@@ -150,8 +159,7 @@ void PlayMonitor::match_timeline() {
     }
     t.first_block = cur;
     t.block_count = take;
-    for (size_t j = 0; j < take; ++j)
-      t.ideal_cycles += feed_modulus_ / static_cast<double>(blocks[cur + j].feed);
+    for (size_t j = 0; j < take; ++j) t.ideal_cycles += ideal_clocks(blocks[cur + j]);
     cur += take;
   }
   // A run cut off by the end of the simulation does not count as played.

@@ -70,7 +70,9 @@ struct PlaySummary {
 class PlayMonitor {
  public:
   // `feed_modulus` is M = 60 f_clk 10^FeedFracDigits; ideal block clocks are M / F.
-  PlayMonitor(const tape::Program& program, uint64_t feed_modulus);
+  // The machine cfg gives the programmed block times (its feed modulus, and its rapid step
+  // for G00 blocks).
+  PlayMonitor(const tape::Program& program, const InterpConfig& cfg);
 
   // The outputs after edge `cycle` (0 = after reset). Call once per clock, in order.
   void observe(uint64_t cycle, const InterpOutputs& o);
@@ -85,9 +87,10 @@ class PlayMonitor {
  private:
   void pulse(int64_t x, int64_t y);
   void match_timeline();
+  double ideal_clocks(const tape::Block& b) const;
 
   const tape::Program& program_;
-  double feed_modulus_;
+  InterpConfig cfg_;
   PlaySummary s_;
   BlockLoadWatch last_;    // the outputs last observed
   bool finished_ = false;  // done or error

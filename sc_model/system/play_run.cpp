@@ -31,15 +31,17 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     // Iterations: 2^k for a line; fewer than 2^(k+1) for an arc, whose k is that of its
     // largest coordinate about the centre (<= |I| + |X|, |J| + |Y|), and whose preparation
     // in the decoder takes ArcPrepare::clocks (docs/interpolator.md 3.5).
-    const bool arc = b.motion != tape::Motion::kLine;
+    const bool arc = tape::is_arc(b.motion);
     const uint64_t m = static_cast<uint64_t>(
         arc ? std::max(std::llabs(b.i) + std::llabs(b.dx), std::llabs(b.j) + std::llabs(b.dy))
             : std::max(std::llabs(b.dx), std::llabs(b.dy)));
-    unsigned k = 0;
-    while (k < 62 && (m >> k) != 0) ++k;
+    const unsigned k = bit_length(m);
     const uint64_t iterations = arc ? 2ull << k : 1ull << k;
     const uint64_t prepare = arc ? ArcPrepare::clocks(cfg.inc_width, cfg.serial(), iterations) : 0;
-    const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
+    // M 2^k / S: ceil(M / F) for G01, the rapid step's rate for G00.
+    const unsigned __int128 step = line_step(b, cfg);
+    const uint64_t programmed =
+        step ? static_cast<uint64_t>(((static_cast<unsigned __int128>(cfg.feed_modulus) << k) + step - 1) / step) : 0;
     // Saturated, one iteration per clock (per 2P clocks with BitSerial: SerialDda).
     const uint64_t iteration = cfg.serial() ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
     total += std::max(iterations * iteration + 1, programmed) + prepare + 3;
@@ -68,7 +70,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
 
   PlayResult r;
-  r.config = interp_config(opt.clock_hz);  // the default widths, in the chosen arch
+  r.config = interp_config(opt.clock_hz, {}, opt.rapid_mm_min);  // the default widths, in the chosen arch
   r.config.arch = opt.arch;
   r.clock_hz = opt.clock_hz;
   r.reader_cps = opt.reader_cps;

@@ -15,7 +15,7 @@ SystemTop::SystemTop(sc_core::sc_module_name name, const SystemSetup& setup, Fra
       engine_(setup.engine == EngineKind::kGolden
                   ? make_golden_engine(setup.config, waves_)
                   : make_rtl_engine(setup.config, setup.clock_hz, !setup.vcd_path.empty())),
-      monitor_(program, setup.config.feed_modulus) {
+      monitor_(program, setup.config) {
   waves_.feed_modulus_i.write(setup.config.feed_modulus);
   SC_HAS_PROCESS(SystemTop);
   SC_THREAD(run);

@@ -31,6 +31,7 @@ struct CheckArgs {
   double tol_mm = 0.01;
   std::string engine = "golden";
   Arch arch = Arch::kSerial;
+  double rapid_mm_min = kDefaultRapidMmMin;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
   std::string svg, report;
@@ -66,6 +67,7 @@ int run(const CheckArgs& a) {
   setup.reader_cps = a.reader_cps;
   setup.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
   setup.arch = a.arch;
+  setup.rapid_mm_min = a.rapid_mm_min;
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";
@@ -124,6 +126,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
       ->check(CLI::IsMember({"golden", "rtl"}))
       ->capture_default_str();
   add_arch_option(cmd, args->arch);
+  add_rapid_option(cmd, args->rapid_mm_min);
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();

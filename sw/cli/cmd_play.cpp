@@ -31,6 +31,7 @@ struct PlayArgs {
   std::string tape;
   std::string engine = "golden";
   Arch arch = Arch::kSerial;
+  double rapid_mm_min = kDefaultRapidMmMin;
   std::string vcd, vcd_from, vcd_to, report;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
@@ -48,6 +49,7 @@ int run(const PlayArgs& a) {
   PlayOptions opt;
   opt.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
   opt.arch = a.arch;
+  opt.rapid_mm_min = a.rapid_mm_min;
   opt.clock_hz = a.clock_hz;
   opt.reader_cps = a.reader_cps;
   opt.vcd_path = a.vcd;
@@ -116,6 +118,7 @@ void setup(CLI::App& app) {
       ->check(CLI::IsMember({"golden", "rtl"}))
       ->capture_default_str();
   add_arch_option(cmd, args->arch);
+  add_rapid_option(cmd, args->rapid_mm_min);
   cmd->add_option("--vcd", args->vcd, "Write waves (VCD) to this file");
   const auto bound_check = [](const std::string& s) -> std::string {
     try {

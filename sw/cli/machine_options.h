@@ -1,6 +1,6 @@
 // The options that choose the machine a command plays on, one definition each, for every
 // command that plays a tape (play, cosim, check, board-sim, sweep's grid and the soak read
-// the same words): --arch.
+// the same words): --arch, --rapid.
 // Idea: a user learns an option once; its name, values, default and help are written here
 // only, and a command adds it with one call.
 #pragma once
@@ -11,6 +11,16 @@
 #include "interp_ports.h"
 
 namespace ncinterp::cli {
+
+// --rapid MM_PER_MIN into `rapid_mm_min`: the machine's rapid rate, at which G00 plays.
+inline CLI::Option* add_rapid_option(CLI::App* cmd, double& rapid_mm_min) {
+  return cmd
+      ->add_option("--rapid", rapid_mm_min,
+                   "The machine's rapid rate, mm/min: a G00 traverse's longer axis moves at half "
+                   "to all of it (docs/tape-format.md)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
 
 // --arch serial|parallel into `arch` (default: serial, what the boards ship).
 inline CLI::Option* add_arch_option(CLI::App* cmd, Arch& arch) {

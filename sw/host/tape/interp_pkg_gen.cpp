@@ -141,13 +141,20 @@ void items(std::ostream& out, const Entry (&entries)[N], const std::string& pref
 }
 
 // A function of the package: whether a G or M code (<= 99: 7 bits) is one of `numbers`.
+// A function true for the listed numbers. It compares with literals, not with the enum's
+// names: Yosys 0.23 does not resolve a package's enum names inside a package function
+// inlined into a module.
 void code_function(std::ostream& out, const std::string& name, const std::string& what,
-                   const std::vector<std::pair<unsigned, std::string>>& numbers) {
+                   const std::vector<std::pair<unsigned, std::string>>& numbers,
+                   const std::string& arg = "code", unsigned width = 7,
+                   const std::string& width_name = "6") {
   out << "  // " << what << "\n"
-      << "  function automatic logic " << name << "(input logic [6:0] code);\n"
+      << "  function automatic logic " << name << "(input logic [" << width_name << ":0] " << arg
+      << ");\n"
       << "    " << name << " = ";
   for (size_t i = 0; i < numbers.size(); ++i)
-    out << (i ? "\n" + std::string(name.size() + 7, ' ') + "|| " : "") << "code == 7'd" << numbers[i].first;
+    out << (i ? "\n" + std::string(name.size() + 7, ' ') + "|| " : "") << arg << " == " << width
+        << "'d" << numbers[i].first;
   out << ";\n  endfunction\n";
 }
 
@@ -204,6 +211,11 @@ std::string package(const std::string& tape_dir) {
   std::vector<std::pair<unsigned, std::string>> motions;
   for (const Entry& m : kMotions) motions.emplace_back(m.value, m.comment);
   code_function(out, "g_motion", "A G code that is a motion (tape_motions.def).", motions);
+  std::vector<std::pair<unsigned, std::string>> arcs;
+  for (const Entry& m : kMotions)
+    if (std::string(m.name).rfind("Arc", 0) == 0) arcs.emplace_back(m.value, m.comment);
+  code_function(out, "motion_is_arc", "A motion code that is a circular arc; the others are straight.",
+                arcs, "motion", motion_bits, "MotionWidth-1");
   code_function(out, "g_setting", "A G code that states what the interpolator always does (tape_codes.def).",
                 codes('G', "Setting"));
   code_function(out, "m_end", "An M code that ends the program (tape_codes.def).", codes('M', "End"));

@@ -22,6 +22,9 @@ enum class Motion : uint8_t {
 #undef TAPE_MOTION
 };
 
+// A circular arc (G02, G03); the others are straight: G01 at the feed, G00 at the rapid rate.
+constexpr bool is_arc(Motion m) { return m == Motion::kArcCw || m == Motion::kArcCcw; }
+
 // A G number that is a motion (tape_motions.def).
 constexpr bool is_motion(uint64_t g) {
 #define TAPE_MOTION(name, code, word) \
@@ -46,7 +49,7 @@ struct Block {
   Motion motion = Motion::kLine;
   int64_t dx = 0, dy = 0;       // incremental move, BLU
   int64_t i = 0, j = 0;         // arc centre relative to the block's start, BLU
-  uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min
+  uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min (G00: none)
 };
 
 struct Format {

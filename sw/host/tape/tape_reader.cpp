@@ -225,7 +225,7 @@ class Reader {
         if (code_kind('G', value_) != CodeKind::kSetting) unsupported("G");
         return;  // a setting: what the interpolator always does
     }
-    if (!format_.circle_mode && motion_ != Motion::kLine)
+    if (!format_.circle_mode && is_arc(motion_))
       fail(TapeError::kNoCircleMode, word_offset_,
            "G0" + std::to_string(value_) + ": an arc block, but the interpolator is built without "
            "circle mode (lines only); write the arcs as chords (ncinterp tape --arcs chords)");
@@ -239,13 +239,14 @@ class Reader {
 
   void end_block() {
     if (motion_in_block_) {
-      if (feed_ == 0)
+      // G00 plays at the machine's rapid rate: it needs no F (and keeps the modal one).
+      if (feed_ == 0 && motion_ != Motion::kRapid)
         fail(TapeError::kMissingFeed, offset_,
              "missing feed: no F programmed (or F0) for a motion block");
       block_.n = n_;
       block_.motion = motion_;
       block_.feed = feed_;
-      if (motion_ != Motion::kLine) check_arc();
+      if (is_arc(motion_)) check_arc();
       program_.blocks.push_back(block_);
     }
     if (end_in_block_) {

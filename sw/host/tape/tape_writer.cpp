@@ -45,13 +45,13 @@ void check_block(const Block& b, const Format& f) {
   check_inc(b.dy, "Y");
   check_inc(b.i, "I");
   check_inc(b.j, "J");
-  if (b.motion == Motion::kLine && (b.i != 0 || b.j != 0))
+  if (!is_arc(b.motion) && (b.i != 0 || b.j != 0))
     throw std::invalid_argument(where + "a line block has I/J");
-  if (b.motion != Motion::kLine) {
+  if (is_arc(b.motion)) {
     const ArcRuleBroken broken = broken_arc_rule(b, inc_max);
     if (broken.code != TapeError::kNone) throw std::invalid_argument(where + broken.message);
   }
-  if (b.feed == 0) throw std::invalid_argument(where + "feed F is 0");
+  if (b.feed == 0 && b.motion != Motion::kRapid) throw std::invalid_argument(where + "feed F is 0");
   if (b.feed > max_for_width(f.feed_width))
     throw std::invalid_argument(where + "feed exceeds the F register");
   if (b.n > max_for_width(f.seq_width))
@@ -68,10 +68,12 @@ std::string format_program(const Program& program, const Format& format) {
     out << 'N' << b.n << " G0" << static_cast<int>(b.motion)
         << " X" << signed_fixed_point(b.dx, format.frac_digits)
         << " Y" << signed_fixed_point(b.dy, format.frac_digits);
-    if (b.motion != Motion::kLine)
+    if (is_arc(b.motion))
       out << " I" << signed_fixed_point(b.i, format.frac_digits)
           << " J" << signed_fixed_point(b.j, format.frac_digits);
-    out << " F" << fixed_point(b.feed, format.feed_frac_digits) << '\n';
+    // A rapid traverse (G00) plays at the machine's rapid rate: no F.
+    if (b.motion != Motion::kRapid) out << " F" << fixed_point(b.feed, format.feed_frac_digits);
+    out << '\n';
   }
   out << (program.end_m30 ? "M30" : "M02") << "\n%\n";
   return out.str();

@@ -1,17 +1,13 @@
 // Free-running circle DDA for the update-scheme study (see the header).
 #include "scheme_study.h"
 
+#include "bit_length.h"
+
 #include <cmath>
 
 namespace ncinterp::circle_study {
 
 namespace {
-
-unsigned bit_length(uint64_t v) {
-  unsigned k = 0;
-  while ((v >> k) != 0) ++k;
-  return k;
-}
 
 // One integrator: adds `in`, steps the coordinate once per carry (or borrow).
 bool integrate(int64_t& acc, int64_t in, int64_t kpow, int64_t& coord) {

@@ -1,6 +1,8 @@
 // Sampled-data methods against the hardware circle DDA (see dda_comparison.h).
 #include "dda_comparison.h"
 
+#include "bit_length.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -17,12 +19,6 @@ constexpr double kDoubleBudgetBlu = 0.5;  // the method's own error, in double
 constexpr double kTotalBudgetBlu = 1.0;   // with the word's rounding
 constexpr double kSmallestH = 1e-6;
 constexpr int kLongestWord = 62;
-
-unsigned bit_length(uint64_t v) {
-  unsigned k = 0;
-  while (v >> k) ++k;
-  return k;
-}
 
 }  // namespace
 

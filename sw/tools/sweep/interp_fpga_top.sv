@@ -26,7 +26,7 @@ module interp_fpga_top #(
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
-  input  logic       cfg_data_i,    // feed modulus, shifted in MSB first
+  input  logic       cfg_data_i,    // feed modulus, then the rapid step, shifted in MSB first
   input  logic       cfg_shift_i,
   input  logic [7:0] frame_i,
   input  logic       frame_valid_i,
@@ -48,8 +48,9 @@ module interp_fpga_top #(
   localparam int StatusWidth  = 2 * PosWidth + 2 * SeqWidth + OffsetWidth;
   localparam int StatusBytes  = (StatusWidth + 7) / 8;
 
-  // modulus_q: the feed modulus as shifted in (static while the machine runs).
-  logic [ModulusWidth-1:0] modulus_q;
+  // modulus_q, rapid_q: the feed modulus and the rapid step as shifted in (static while the
+  // machine runs).
+  logic [ModulusWidth-1:0] modulus_q, rapid_q;
   // rd_data_q: the selected byte of the status word, registered.
   logic [7:0]              rd_data_q;
 
@@ -64,7 +65,7 @@ module interp_fpga_top #(
     .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i(modulus_q),
+    .feed_modulus_i(modulus_q), .rapid_step_i(rapid_q),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .pos_x_o(pos_x), .pos_y_o(pos_y),
@@ -76,7 +77,7 @@ module interp_fpga_top #(
   assign status = (8 * StatusBytes)'({pos_x, pos_y, block_n, error_block, error_offset});
 
   always_ff @(posedge clk_i) begin
-    if (cfg_shift_i) modulus_q <= {modulus_q[ModulusWidth-2:0], cfg_data_i};
+    if (cfg_shift_i) {modulus_q, rapid_q} <= {modulus_q[ModulusWidth-2:0], rapid_q, cfg_data_i};
     rd_data_q <= status[8 * rd_sel_i +: 8];
   end
 

@@ -16,10 +16,7 @@ std::string joined(const std::vector<std::string>& items) {
   return s;
 }
 
-std::string build_dir(const RtlVariantSetup& s, const RtlVariant& v) {
-  return s.build_root + "/w" + std::to_string(v.width) + "-d" + std::to_string(v.frac_digits) + "-" +
-         arch_name(v.arch) + (v.circle_mode ? "" : "-lines");
-}
+std::string build_dir(const RtlVariantSetup& s, const RtlVariant& v) { return s.build_root + "/" + v.key(); }
 
 std::string step_failure(const std::string& what, const ProcessOutcome& p, const std::string& log) {
   if (!p.started || p.signal) return what + ": " + p.failure;
@@ -32,6 +29,11 @@ std::string step_failure(const std::string& what, const ProcessOutcome& p, const
 std::string RtlVariant::name() const {
   return "W=" + std::to_string(width) + " D=" + std::to_string(frac_digits) + " " + arch_name(arch) +
          (circle_mode ? "" : " lines");
+}
+
+std::string RtlVariant::key() const {
+  return "w" + std::to_string(width) + "-d" + std::to_string(frac_digits) + "-" + arch_name(arch) +
+         (circle_mode ? "" : "-lines");
 }
 
 std::string rtl_variant_executable(const RtlVariantSetup& s, const RtlVariant& v) {

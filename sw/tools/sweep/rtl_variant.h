@@ -23,8 +23,10 @@ struct RtlVariant {
   unsigned frac_digits = 3;  // FracDigits (BLU = 10^-frac_digits mm)
   Arch arch = Arch::kSerial;
   bool circle_mode = true;   // CircleMode (false: the lines-only core)
-  // "W=16 D=3 serial" (" lines" without circle mode): in messages and the build tree's name.
+  // "W=16 D=3 serial" (" lines" without circle mode): in messages.
   std::string name() const;
+  // "w16-d3-serial" ("-lines"): the build tree's name, a file name.
+  std::string key() const;
 };
 
 struct RtlVariantSetup {

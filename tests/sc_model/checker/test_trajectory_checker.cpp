@@ -69,6 +69,51 @@ TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheSerialPlayer) {
 
 // The pulse path of a chord polygon inscribed in a circle: the checker's total error at
 // every pulse equals | |p - c| - R | computed here from the recorded pulse positions.
+// G00 plays as a line at the machine's rapid step, S = rapid_step whatever the block's
+// length: both archs, on the golden model and the RTL, pass every rule (the documented
+// schedule with that S), take M 2^k / S clocks for an unsaturated traverse, and a faster
+// rapid rate makes the traverse shorter while the G01 block between keeps its 1/F.
+TEST(TrajectoryChecker, RapidTraversesPlayAtTheRapidRateInBothArchs) {
+  tape::Program p;
+  auto block = [&](uint32_t n, tape::Motion m, int64_t dx, int64_t dy, uint64_t feed) {
+    tape::Block b;
+    b.n = n;
+    b.motion = m;
+    b.dx = dx;
+    b.dy = dy;
+    b.feed = feed;
+    p.blocks.push_back(b);
+  };
+  block(1, tape::Motion::kRapid, 1000, -300, 0);
+  block(2, tape::Motion::kLine, 100, 0, 6000000);
+  block(3, tape::Motion::kRapid, -1100, 300, 0);
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    for (EngineKind engine : {EngineKind::kGolden, EngineKind::kRtl}) {
+      SCOPED_TRACE(std::string(arch_name(arch)) + " " + engine_name(engine));
+      uint64_t traverse_clocks[2] = {0, 0};
+      for (double rapid : {2000.0, 4000.0}) {
+        CheckSetup setup;
+        setup.clock_hz = 12e6;  // the boards' clock: no traverse saturates in either arch
+        setup.reader_cps = 1e6;
+        setup.arch = arch;
+        setup.engine = engine;
+        setup.rapid_mm_min = rapid;
+        const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
+        ASSERT_TRUE(out.passed()) << first_violation(*out.checker);
+        EXPECT_EQ(out.checker->position(), (GridPoint{0, 0}));
+        const InterpConfig cfg = interp_config(setup.clock_hz, {}, rapid);
+        // k = 10 for the 1 mm traverse: M 2^10 / S clocks.
+        const uint64_t want = ((cfg.feed_modulus << 10) + cfg.rapid_step - 1) / cfg.rapid_step;
+        ASSERT_FALSE(out.checker->results()[0].saturated);
+        EXPECT_EQ(out.checker->results()[0].clocks, want);
+        EXPECT_EQ(out.checker->results()[1].clocks, cfg.feed_modulus / 6000000);
+        traverse_clocks[rapid == 2000.0 ? 0 : 1] = out.checker->results()[0].clocks;
+      }
+      EXPECT_EQ(traverse_clocks[0], 2 * traverse_clocks[1]);
+    }
+  }
+}
+
 TEST(TrajectoryChecker, TotalErrorOfAnInscribedPolygonMatchesTheCircle) {
   const double r_mm = 20.0;
   firststage::Contour circle;

@@ -1,6 +1,8 @@
 // Program-level support for the circle-mode tests (see the header).
 #include "circle_program.h"
 
+#include "bit_length.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,12 +16,6 @@ using circle_study::random_arc;
 using circle_study::run_arc;
 
 namespace {
-
-unsigned bit_length(uint64_t v) {
-  unsigned k = 0;
-  while ((v >> k) != 0) ++k;
-  return k;
-}
 
 uint64_t magnitude(int64_t v) { return static_cast<uint64_t>(v < 0 ? -v : v); }
 

@@ -20,6 +20,7 @@
 #include "Vtape_decoder_narrow.h"
 #include "Vtape_decoder_serial.h"
 #include "Vtape_decoder_serial_narrow.h"
+#include "bit_length.h"
 #include "tape_decoder.h"
 #include "verilated.h"
 #include "verilated_clock.h"
@@ -62,11 +63,11 @@ std::vector<uint8_t> random_tape(std::mt19937_64& rng, const InterpConfig& c) {
   for (int b = 0; b < blocks; ++b) {
     if (chance(60)) t += "N" + number(rng, c.seq_width, 0) + " ";
     if (chance(50)) {
-      static const char* const codes[] = {"01", "1", "02", "03", "17", "01", "91", "1", "93", "2",
+      static const char* const codes[] = {"01", "1", "02", "03", "17", "01", "91", "00", "93", "2",
                                           "99", "100", "123"};
       const std::string g = codes[rng() % (chance(90) ? 10 : 13)];
       t += "G" + g + " ";
-      if (g == "01" || g == "1") arc = false;
+      if (g == "01" || g == "1" || g == "00") arc = false;
       if (g == "02" || g == "03" || g == "2") arc = true;
     }
     const unsigned bits = arc ? std::min(c.inc_width, 9u) : c.inc_width;
@@ -121,9 +122,7 @@ struct HeldBlock {
 };
 template <typename Port>
 HeldBlock unpack(const Port& p, const InterpConfig& c, unsigned step_width) {
-  const unsigned w = c.inc_width;
-  unsigned k_width = 0;  // $clog2(W + 1): the bit length of W
-  while ((w >> k_width) != 0) ++k_width;
+  const unsigned w = c.inc_width, k_width = bit_length(w);  // $clog2(W + 1)
   HeldBlock b;
   unsigned at = 0;
   const auto take = [&](unsigned width) {
@@ -208,6 +207,8 @@ template <typename Model>
     const unsigned offer_percent = std::vector<unsigned>{100, 50, 3}[rng() % 3];
     const unsigned free_percent = std::vector<unsigned>{100, 30}[rng() % 2];
     m.rst_ni = 0;
+    // The rapid step as the decoder's port holds it (ModulusWidth bits).
+    m.rapid_step_i = c.rapid_step & ((uint64_t{1} << c.modulus_width) - 1);
     m.frame_valid_i = 0;
     m.tape_end_i = 0;
     m.blk_ready_i = 0;

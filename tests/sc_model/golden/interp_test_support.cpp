@@ -1,6 +1,8 @@
 // Test support: line tape text, output recorder, program checks (see the header).
 #include "interp_test_support.h"
 
+#include "bit_length.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -14,12 +16,6 @@ namespace ncinterp::test {
 namespace {
 
 uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
-
-unsigned bit_length(uint64_t x) {
-  unsigned k = 0;
-  while (x >> k) ++k;
-  return k;
-}
 
 }  // namespace
 

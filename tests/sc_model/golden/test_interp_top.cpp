@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "interp_top.h"
+
+#include "bit_length.h"
 #include "interp_test_support.h"
 
 namespace ncinterp {
@@ -32,12 +34,6 @@ InterpConfig parallel_at(double clock_hz) {
   InterpConfig cfg = interp_config(clock_hz);
   cfg.arch = Arch::kParallel;
   return cfg;
-}
-
-unsigned bit_length(uint64_t x) {
-  unsigned k = 0;
-  while (x >> k) ++k;
-  return k;
 }
 
 TEST(GoldenInterp, OutputsAfterResetAreIdle) {

@@ -42,7 +42,9 @@ struct Script {
     clock();
   }
   PlaySummary run(const tape::Program& p, uint64_t modulus) {
-    PlayMonitor m(p, modulus);
+    InterpConfig cfg;
+    cfg.feed_modulus = modulus;
+    PlayMonitor m(p, cfg);
     for (size_t c = 0; c < clocks.size(); ++c) m.observe(c, clocks[c]);
     return m.finish(clocks.back());
   }
@@ -189,7 +191,7 @@ TEST(PlayMonitor, GoldenRunsMeetTheGuarantees) {
     GoldenInterp dut(cfg);
     dut.reset();
     FrameSource source(frames, FrameSource::cycles_per_frame_for(clock_hz, 2000));
-    PlayMonitor m(p, cfg.feed_modulus);
+    PlayMonitor m(p, cfg);
     m.observe(0, dut.outputs());
     while (!m.finished() && dut.cycle() < 50'000'000) {
       const bool ready = dut.outputs().frame_ready;

@@ -43,7 +43,7 @@ PlaySummary plain_golden_run(const std::vector<uint8_t>& frames, const tape::Pro
   GoldenInterp dut(cfg);
   dut.reset();
   FrameSource source(frames, FrameSource::cycles_per_frame_for(kClockHz, kReaderCps));
-  PlayMonitor m(p, cfg.feed_modulus);
+  PlayMonitor m(p, cfg);
   m.observe(0, dut.outputs());
   while (!m.finished() && dut.cycle() < 100'000'000) {
     const bool ready = dut.outputs().frame_ready;
