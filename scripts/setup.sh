@@ -3,9 +3,10 @@
 # commands can both start with it. Run as root or with sudo available.
 #   setup.sh          every package, the whole build (every test, benchmark and tool)
 #   setup.sh --demo   only what the demo needs, and only the `ncinterp` executable; a build
-#                     directory configured for the first time gets no tests or benchmarks
-#                     (the CMake options NCINTERP_TESTS and NCINTERP_BENCH, which
-#                     scripts/test.sh turns back on)
+#                     directory configured for the first time gets no tests, no benchmarks
+#                     and no SVG plots (the CMake options NCINTERP_TESTS, NCINTERP_BENCH and
+#                     NCINTERP_PLOT, which scripts/test.sh turns back on): PLplot's package
+#                     alone brings some 190 packages, more than the rest of the demo's
 set -euo pipefail
 demo=0
 [[ ${1:-} == --demo ]] && demo=1
@@ -14,11 +15,11 @@ packages=(
   build-essential cmake ninja-build pkg-config
   verilator libsystemc-dev            # RTL simulation, system model
   libcli11-dev nlohmann-json3-dev     # command line, JSON reports
-  libplplot-dev                       # SVG plots (PLplot's svg driver)
 )
 if ((!demo)); then
   packages+=(
     git
+    libplplot-dev                       # SVG plots (PLplot's svg driver)
     libgtest-dev libgmock-dev           # tests
     yosys nextpnr-ice40 fpga-icestorm   # synthesis, area and Fmax
     z3 boolector                        # SMT solvers of the formal proofs (scripts/formal.sh)
@@ -43,11 +44,11 @@ build=$root/build
 if ((demo)); then
   if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-      -DNCINTERP_TESTS=OFF -DNCINTERP_BENCH=OFF >/dev/null
+      -DNCINTERP_TESTS=OFF -DNCINTERP_BENCH=OFF -DNCINTERP_PLOT=OFF >/dev/null
   fi
   cmake --build "$build" --parallel "$(nproc)" --target ncinterp
 else
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DNCINTERP_TESTS=ON -DNCINTERP_BENCH=ON >/dev/null
+    -DNCINTERP_TESTS=ON -DNCINTERP_BENCH=ON -DNCINTERP_PLOT=ON >/dev/null
   cmake --build "$build" --parallel "$(nproc)"
 fi
