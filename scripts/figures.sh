@@ -112,8 +112,8 @@ if ((quick)); then
   fmax_seeds=$quick_fmax_seeds sim_seconds=$quick_sim_seconds
   firststage_repeats=$quick_firststage_repeats
 fi
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  echo "figures.sh: no configured build in $build (run scripts/setup.sh first)" >&2
+if [ ! -f "$build/CMakeCache.txt" ] || grep -qE '^NCINTERP_(BENCH|TESTS):BOOL=OFF' "$build/CMakeCache.txt"; then
+  echo "figures.sh: no full build in $build (run scripts/setup.sh first: the demo's build has no benchmarks)" >&2
   exit 1
 fi
 work=$(mktemp -d /tmp/ncinterp-figures.XXXXXX)
