@@ -83,8 +83,7 @@ test_labels=(
   "unit | -L unit"
   "integration | -L integration"
   "formal | -L formal"
-  "slow | -L slow"
-  "all (scripts/test.sh) | "
+  "all (what scripts/test.sh and CI run) | "
 )
 
 # First-stage speed: bench/firststage/firststage_bench --section speed.
