@@ -38,6 +38,11 @@ area_rows=(
   "iCEstick board (HX1K) | board | icestick | -"
   "iCEBreaker board (UP5K) | board | icebreaker | -"
 )
+# Per module, before flattening (LUT4 / flip-flops / carry of each module; a module with
+# several instances counts once): "doc | marker | top file or - | top | parameters".
+module_tables=(
+  "docs/board.md | board-modules | rtl/board | board_top | board_core:BitSerial=1"
+)
 # Placement seeds for the Fmax table (the median is given; Fmax moves by a few percent from
 # seed to seed at this utilisation).
 fmax_seeds="1 2 3 4 5"
@@ -231,6 +236,38 @@ section_area() {
   done
   put docs/area.md area "$area"
   put docs/area.md fmax "$fmax"
+  local doc marker files top params p
+  for row in "${module_tables[@]}"; do
+    doc=$(field "$row" 1) marker=$(field "$row" 2) files=$(field "$row" 3) top=$(field "$row" 4)
+    params=$(field "$row" 5)
+    echo "figures.sh: area: modules of $top" >&2
+    local extra="" include="" chp=""
+    if [ "$files" != "-" ]; then extra=$(ls "$files"/*.sv | tr '\n' ' '); include="-I$files"; fi
+    for p in $params; do  # MODULE:NAME=VALUE
+      local mod=${p%%:*} kv=${p#*:}
+      chp+="chparam -set ${kv%%=*} ${kv#*=} $mod; "
+    done
+    yosys -q -l "$work/modules.log" -p "read_verilog -sv $include $(rtl_sources) $extra; $chp
+      synth_ice40 $synth_options -noflatten -top $top; stat" >/dev/null
+    {
+      stamp area
+      echo
+      echo "\`synth_ice40 -noflatten -top $top\` ($params), per module (a module with several instances counts once):"
+      echo
+      echo "| module | LUT4 | flip-flops | carry |"
+      echo "|---|---:|---:|---:|"
+      # yosys prints every module's statistics twice; each printing restarts the sums.
+      awk '
+        /^=== / { mod = $2; sub(/^\$paramod\$[0-9a-f]+\\/, "", mod); sub(/^\$paramod\\/, "", mod); sub(/\\.*/, "", mod); ff[mod] = 0 }
+        /^=== design hierarchy ===/ { mod = "" }
+        mod != "" && $1 == "SB_LUT4" { lut[mod] = $2 }
+        mod != "" && $1 ~ /^SB_DFF/ { ff[mod] += $2 }
+        mod != "" && $1 == "SB_CARRY" { carry[mod] = $2 }
+        END { for (m in lut) if (m != "") printf "| %s | %d | %d | %d |\n", m, lut[m], ff[m], carry[m] }
+      ' "$work/modules.log" | sort
+    } >"$work/modules.md"
+    put "$doc" "$marker" "$work/modules.md"
+  done
 }
 
 section_sim() {
