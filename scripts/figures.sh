@@ -145,9 +145,9 @@ put() {
   if ! grep -qxF "<!-- figures:$name -->" "$file" || ! grep -qxF "<!-- /figures:$name -->" "$file"; then
     echo "figures.sh: $file has no markers for figures:$name" >&2; exit 1
   fi
-  awk -v open="<!-- figures:$name -->" -v close="<!-- /figures:$name -->" -v table="$table" '
-    $0 == open  { print; while ((getline line < table) > 0) print line; skip = 1; next }
-    $0 == close { skip = 0 }
+  awk -v first="<!-- figures:$name -->" -v last="<!-- /figures:$name -->" -v table="$table" '
+    $0 == first { print; while ((getline line < table) > 0) print line; skip = 1; next }
+    $0 == last  { skip = 0 }
     !skip       { print }' "$file" >"$work/doc.tmp"
   cat "$work/doc.tmp" >"$file"
   echo "figures.sh: $file, figures:$name"
