@@ -219,18 +219,18 @@ section_area() {
         median=$(printf '%s\n' "${fmaxes[@]}" | grep . | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
         echo "| $label | ${part%%:*} | $(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g') | ${median:--} |" >>"$fmax" ;;
       board)
-        local out status=0 cells fmax
+        local out status=0 cells board_fmax
         out=$("$build/ncinterp" bitstream --board "$params" -o "$dir/$params.bin" 2>&1) || status=$?
         local logs=$dir/$params.bin.build
         cells=$(cells_of "$logs/nextpnr_seed1.log" 2>/dev/null || true)
-        fmax=$(fmax_of "$logs/nextpnr_seed1.log" 2>/dev/null || true)
+        board_fmax=$(fmax_of "$logs/nextpnr_seed1.log" 2>/dev/null || true)
         if ((status == 2)); then
           cells=$(sed -nE 's/.*needs ([0-9]+) logic cells, the ([A-Z0-9]+) has ([0-9]+).*/\1 asked, \3 on the \2: does not fit/p' <<<"$out" | head -1)
           [ -n "$cells" ] || cells=$(head -1 <<<"$out")
         elif ((status != 0)); then
           cells="bitstream failed: $(head -1 <<<"$out")"
         fi
-        echo "| $label | $(stat_of "$logs/yosys.log") | ${cells:--} | ${fmax:--} |" >>"$area" ;;
+        echo "| $label | $(stat_of "$logs/yosys.log") | ${cells:--} | ${board_fmax:--} |" >>"$area" ;;
       *) echo "figures.sh: unknown kind '$kind' in area_rows" >&2; exit 1 ;;
     esac
   done
