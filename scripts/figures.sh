@@ -79,6 +79,8 @@ gap_tables=(
   "gaps-serial-reader | reader_gaps.sh --bit-serial | 4000 2000 1500 1000 500 100 30 | examples/circle_r50.nc part_arcs.nc bench/sim/small_arcs.nc"
   "gaps-serial-fast-reader | reader_gaps.sh --bit-serial | 200000 50000 30000 10000 | examples/gear.nc part_arcs.nc"
   "gaps-serial-12mhz | reader_gaps.sh --bit-serial --clock-hz 12000000 | 4000 2000 1500 1000 500 | bench/sim/small_arcs.nc"
+  "gaps-board-clock | reader_gaps.sh --clock-hz 12000000 | 200000 30000 1000 | examples/gear.nc"
+  "gaps-serial-board-clock | reader_gaps.sh --bit-serial --clock-hz 12000000 | 200000 30000 1000 | examples/gear.nc"
   "gaps-feed | dry_run_gaps.sh | 1000 2000 5000 10000 20000 | examples/contours/circle_r50.json 1000000 12000000"
 )
 
