@@ -22,6 +22,25 @@ enum class Motion : uint8_t {
 #undef TAPE_MOTION
 };
 
+// A G number that is a motion (tape_motions.def).
+constexpr bool is_motion(uint64_t g) {
+#define TAPE_MOTION(name, code, word) \
+  if (g == code) return true;
+#include "tape_motions.def"
+#undef TAPE_MOTION
+  return false;
+}
+
+// What the interpolator does with a G or M code that is not a motion (tape_codes.def).
+enum class CodeKind : uint8_t { kUnsupported, kSetting, kEnd };
+constexpr CodeKind code_kind(char letter, uint64_t number) {
+#define TAPE_CODE(l, n, kind, meaning) \
+  if (letter == #l[0] && number == n) return CodeKind::k##kind;
+#include "tape_codes.def"
+#undef TAPE_CODE
+  return CodeKind::kUnsupported;
+}
+
 struct Block {
   uint32_t n = 0;               // sequence number
   Motion motion = Motion::kLine;
@@ -37,6 +56,9 @@ struct Format {
   // Added after v1's first draft; the defaults are the interpolator's (InterpConfig).
   unsigned feed_width = 32;       // F <= 2^feed_width - 1
   unsigned seq_width = 20;        // N <= 2^seq_width - 1
+  // The interpolator plays G02/G03 (circle mode); without it an arc's G word is refused
+  // (TapeError::kNoCircleMode), as the lines-only interpolator refuses it.
+  bool circle_mode = true;
 };
 
 struct Program {
