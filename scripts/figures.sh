@@ -29,12 +29,15 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 #               and the feed modulus fixed (a 12 MHz clock), synthesised and placed on the part;
 #   kind board: `ncinterp bitstream --board NAME`, the whole board (UART, FIFO, stretchers,
 #               status line); parameters = the board's name, part from the board.
-#   parameters: NAME=VALUE ... given to chparam (the defaults: W = 16, FeedWidth 32).
+#   parameters: NAME=VALUE ... given to chparam (the defaults: W = 16, FeedWidth 32). The
+#   arch is BitSerial (1 serial, 0 parallel); CircleMode=0 is the lines-only configuration.
 area_rows=(
+  "interp_top, serial | core | BitSerial=1 | -"
   "interp_top, parallel | core | BitSerial=0 | -"
-  "interp_top, bit-serial | core | BitSerial=1 | -"
+  "interp_top, serial, lines only | core | BitSerial=1 CircleMode=0 | -"
+  "interp_ice40_top, serial (the boards') | ice40 | BitSerial=1 | hx1k:tq144"
   "interp_ice40_top, parallel | ice40 | BitSerial=0 | hx8k:ct256"
-  "interp_ice40_top, bit-serial (the boards') | ice40 | BitSerial=1 | hx1k:tq144"
+  "interp_ice40_top, serial, lines only | ice40 | BitSerial=1 CircleMode=0 | hx1k:tq144"
   "iCEstick board (HX1K) | board | icestick | -"
   "iCEBreaker board (UP5K) | board | icebreaker | -"
 )
@@ -50,14 +53,16 @@ quick_fmax_seeds="1"
 
 # Simulation speed, bench/sim/sim_bench: one run per line, "tape | sim_bench arguments".
 sim_runs=(
-  "examples/gear.nc | --skip-icarus"
-  "examples/circle_r50.nc | --engines golden,rtl,cosim,system-golden,system-rtl --skip-icarus"
+  "examples/gear.nc | --arch serial"
+  "examples/gear.nc | --arch parallel"
+  "examples/circle_r50.nc | --arch serial --engines golden,rtl,cosim,system-golden,system-rtl"
+  "examples/circle_r50.nc | --arch parallel --engines golden,rtl,cosim,system-golden,system-rtl"
 )
 sim_seconds=2
 quick_sim_seconds=0.5
 
 # `ncinterp check` on the bundled contours: "input | ncinterp tape arguments"; each tape is
-# checked on every engine of check_engines (wall time of the whole command).
+# checked with every ENGINE:ARCH of check_engines (wall time of the whole command).
 check_inputs=(
   "examples/contours/circle_r50.json | --tol 0.01 --method 3"
   "examples/contours/circle_r50.json | --tol 0.01 --method 3 --arcs circle"
@@ -66,7 +71,7 @@ check_inputs=(
   "examples/contours/naca2412_selig.dat | --tol 0.01 --method 3"
   "examples/contours/part.nc | --tol 0.01 --method 3 --arcs circle"
 )
-check_engines="golden rtl"
+check_engines="golden:serial rtl:serial golden:parallel rtl:parallel"
 
 # Gap clocks (the player idle between blocks) against the reader and the feed, one table
 # per line: "name | script and its options | reader speeds or feeds | tapes or contour and
@@ -74,13 +79,13 @@ check_engines="golden rtl"
 # stage, part_arcs.nc (examples/contours/part.nc --arcs circle) and profile.nc
 # (examples/contours/profile.json). Not in --quick (a few minutes of lock step).
 gap_tables=(
-  "gaps-reader | reader_gaps.sh | 1000 500 400 300 100 30 | examples/gear.nc examples/circle_r50.nc part_arcs.nc profile.nc"
-  "gaps-fast-reader | reader_gaps.sh | 200000 50000 30000 10000 | examples/gear.nc part_arcs.nc"
-  "gaps-serial-reader | reader_gaps.sh --bit-serial | 4000 2000 1500 1000 500 100 30 | examples/circle_r50.nc part_arcs.nc bench/sim/small_arcs.nc"
-  "gaps-serial-fast-reader | reader_gaps.sh --bit-serial | 200000 50000 30000 10000 | examples/gear.nc part_arcs.nc"
-  "gaps-serial-12mhz | reader_gaps.sh --bit-serial --clock-hz 12000000 | 4000 2000 1500 1000 500 | bench/sim/small_arcs.nc"
-  "gaps-board-clock | reader_gaps.sh --clock-hz 12000000 | 200000 30000 1000 | examples/gear.nc"
-  "gaps-serial-board-clock | reader_gaps.sh --bit-serial --clock-hz 12000000 | 200000 30000 1000 | examples/gear.nc"
+  "gaps-reader | reader_gaps.sh --arch parallel | 1000 500 400 300 100 30 | examples/gear.nc examples/circle_r50.nc part_arcs.nc profile.nc"
+  "gaps-fast-reader | reader_gaps.sh --arch parallel | 200000 50000 30000 10000 | examples/gear.nc part_arcs.nc"
+  "gaps-serial-reader | reader_gaps.sh --arch serial | 4000 2000 1500 1000 500 100 30 | examples/circle_r50.nc part_arcs.nc bench/sim/small_arcs.nc"
+  "gaps-serial-fast-reader | reader_gaps.sh --arch serial | 200000 50000 30000 10000 | examples/gear.nc part_arcs.nc"
+  "gaps-serial-12mhz | reader_gaps.sh --arch serial --clock-hz 12000000 | 4000 2000 1500 1000 500 | bench/sim/small_arcs.nc"
+  "gaps-board-clock | reader_gaps.sh --arch parallel --clock-hz 12000000 | 200000 30000 1000 | examples/gear.nc"
+  "gaps-serial-board-clock | reader_gaps.sh --arch serial --clock-hz 12000000 | 200000 30000 1000 | examples/gear.nc"
   "gaps-feed | dry_run_gaps.sh | 1000 2000 5000 10000 20000 | examples/contours/circle_r50.json 1000000 12000000"
 )
 
@@ -302,7 +307,7 @@ section_check() {
     stamp check
     echo
     printf '| input | `ncinterp tape` options | blocks | clocks |'
-    for engine in $check_engines; do printf ' check --engine %s, s |' "$engine"; done
+    for engine in $check_engines; do printf ' %s, %s: s |' "${engine%%:*}" "${engine#*:}"; done
     printf '\n|---|---|---:|---:|'
     for engine in $check_engines; do printf -- '---:|'; done
     echo
@@ -316,8 +321,8 @@ section_check() {
     for engine in $check_engines; do
       local start end
       start=$(date +%s.%N)
-      "$build/ncinterp" check "$work/c.tape" --contour "$input" --engine "$engine" \
-        --report "$work/c.json" >/dev/null
+      "$build/ncinterp" check "$work/c.tape" --contour "$input" --engine "${engine%%:*}" \
+        --arch "${engine#*:}" --report "$work/c.json" >/dev/null
       end=$(date +%s.%N)
       times+=" $(awk -v a="$start" -v b="$end" 'BEGIN {printf "%.2f", b - a}') |"
       blocks=$(sed -nE 's/.*"blocks": *([0-9]+).*/\1/p' "$work/c.json" | head -1)
