@@ -90,12 +90,12 @@ gap_tables=(
 )
 
 # Test time per ctest label (section tests, never run by default: it runs the whole
-# suite, label by label, with as many jobs as cores): "label | ctest selection".
+# suite, label by label, with as many jobs as cores; scripts/test.sh runs them all):
+# "label | ctest selection".
 test_labels=(
   "unit | -L unit"
   "integration | -L integration"
   "formal | -L formal"
-  "all (what scripts/test.sh and CI run) | "
 )
 
 # First-stage speed: bench/firststage/firststage_bench --section speed.
