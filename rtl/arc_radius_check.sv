@@ -33,8 +33,8 @@
 // clock i of a pass reads bit i (the memory's registered read, addressed at clock i - 1)
 // and writes it back, new or unchanged. The first pass reads acc as 0 (the memory still
 // holds the previous arc's). 4A is written in Copy, bit i from acc's bit i - 2 (acc2_q).
-// Until 25 November 2026 (third session) the check ran on one 2W + 4-bit adder in 5W + 5
-// clocks (docs/bit-widths.md section 6 has both areas).
+// Bit-serial rather than on one 2W + 4-bit adder in 5W + 5 clocks: less than half the LUT4s
+// for more clocks than any arc above about 1 mm radius takes anyway (docs/area.md).
 module arc_radius_check #(
   parameter int IncWidth = 16
 ) (

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Newcomer's demo: installs the Debian packages and builds (scripts/setup.sh), then plays the
-# bundled example tape (examples/gear.nc, a 12-tooth gear outline in 48 chords) through the
-# SystemC system model with the verilated RTL, and writes its waves and JSON report.
+# Newcomer's demo: installs the Debian packages it needs and builds the `ncinterp` executable
+# (scripts/setup.sh --demo), then plays the bundled example tape (examples/gear.nc, a
+# 12-tooth gear outline in 48 chords) through the SystemC system model with the verilated
+# RTL, and writes its waves and JSON report.
 # The VCD covers reset, the tape lead-in and the first block (the whole part at 1 MHz would
 # be about 0.7 GB; docs/waves.md explains windows).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/setup.sh"
+bash "$root/scripts/setup.sh" --demo
 "$root/build/ncinterp" play "$root/examples/gear.nc" --engine rtl \
   --vcd "$root/waves/example.vcd" --vcd-to N1 --report "$root/waves/example.json"
 cat <<MSG

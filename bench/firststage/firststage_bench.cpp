@@ -133,7 +133,7 @@ void arcs_section(int count, uint64_t seed) {
   const double tol = 0.01;
   std::printf("\n### Method 3 against the two-sided lower bound and grbl's arc rule, delta = 0.01 mm\n\n");
   std::printf("Bound: integral of sqrt(kappa / (16 delta')) ds with delta' = delta - 1 BLU = 0.009 mm. "
-              "Allowance of issue 4: 1.05 x bound + 1 per smooth piece. With both chain ends on the "
+              "The allowance: 1.05 x bound + 1 per smooth piece. With both chain ends on the "
               "curve no chain can have fewer than ceil(bound + %.3f) chords (first and last chord "
               "one-sided), so the table also shows ceil(1.05 x bound + %.3f). grbl: floor(|theta| R / 2 / "
               "sqrt(delta (2R - delta))) segments per arc at the full delta (its pulse path is not "

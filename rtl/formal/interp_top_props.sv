@@ -17,7 +17,7 @@
 // load), and integrates the pulses. Environment: reset in the first clock, a static modulus
 // (>= 1), tape_end_i stays high once high and no frame comes after it.
 // Why BMC: the decoder and arc preparation have too much unreachable state for k-induction
-// without invariants of their internals (which the area redesign changes); the depth (22)
+// without invariants of their internals, which change whenever their area is worked on; the depth (22)
 // covers a whole program of one block played to done at these widths (the cover reaches it
 // at step 21).
 module interp_top_props #(

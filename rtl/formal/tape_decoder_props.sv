@@ -11,12 +11,11 @@
 //   docs/interpolator.md 3.5) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
 //   frames, or an error, and nothing else stalls the reader;
 // - ap_line_ready_bounded: while the modal motion is G01 (so no arc is prepared), the bound
-//   is K_line = W + 4: a line's addition of F, its k doublings and the clocks around them
-//   (W + 3 until the seventh session, when S was F at the LF); with BitSerial
-//   at least NumWidth + 1, a digit's x10 + d pass and the clock after it.
+//   is K_line = W + 4: a line's addition of F, its k doublings and the clocks around them;
+//   with BitSerial at least NumWidth + 1, a digit's x10 + d pass and the clock after it.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
-// preparation's internals (which the area redesign changes). The CI depth (16 clocks)
+// preparation's internals, which change whenever their area is worked on. The CI depth (16 clocks)
 // covers reading a line block and holding it (ap_held_stable); the stall bounds need more
 // clocks, so they are checked by --deep (24 clocks: a short program and a line's K_line
 // clocks beyond). An arc's K (114 clocks at W = 2) lies beyond that depth, so

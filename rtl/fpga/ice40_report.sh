@@ -8,7 +8,7 @@
 #        rtl/fpga/interp_ice40_top.sv     (0_interp_pkg.sv first: yosys reads a package first)
 # Idea: the per-module numbers come from the hierarchy before flattening, so logic whose
 # outputs the board leaves unconnected is still counted there; the placed total is the
-# flattened design, where synthesis has removed it (docs/bit-widths.md section 6).
+# flattened design, where synthesis has removed it (docs/area.md).
 set -euo pipefail
 work=$1 part=$2 package=$3 seeds=$4
 shift 4

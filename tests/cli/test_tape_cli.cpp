@@ -297,7 +297,7 @@ TEST_F(TapeCli, PointBeyondThePositionCounterIsRefusedBeforeTheWork) {
 }
 
 TEST_F(TapeCli, LooseTolerancesAndNarrowWidthsWork) {
-  // Found in the trial: all of these stopped with "no chord within the tolerance fits".
+  // Each of these once stopped with "no chord within the tolerance fits".
   const std::string circle = kExamples + "/circle_r50.json", naca = kExamples + "/naca2412_selig.dat";
   for (const std::string& args : {circle + " --tol 40", naca + " --tol 25", circle + " --width 2",
                                   circle + " --width 3", naca + " --width 3"}) {
