@@ -35,6 +35,7 @@ package interp_pkg;
   // Motion codes: the G word's number, stored in a block as it is.
   localparam int MotionWidth = 2;
   typedef enum logic [MotionWidth-1:0] {
+    MotionRapid  = 2'd0,  // G00
     MotionLine   = 2'd1,  // G01
     MotionArcCw  = 2'd2,  // G02
     MotionArcCcw = 2'd3   // G03

@@ -8,6 +8,7 @@ packages=(
   verilator libsystemc-dev            # RTL simulation, system model
   libgtest-dev libgmock-dev           # tests
   libcli11-dev nlohmann-json3-dev     # command line, JSON reports
+  libboost-dev                        # Boost.Geometry's R-tree (the checker's contour distance)
   libplplot-dev                       # SVG plots (PLplot's svg driver)
   yosys nextpnr-ice40 fpga-icestorm   # synthesis, area and Fmax
   z3 boolector                        # SMT solvers of the formal proofs (scripts/formal.sh)

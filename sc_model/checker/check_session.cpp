@@ -29,7 +29,12 @@ uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
                                                          std::llabs(b.tape.i), std::llabs(b.tape.j)}));
     const LineSchedule s(big, 0, b.tape.feed, cfg.feed_modulus);
     const uint64_t iteration = cfg.bit_serial ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
-    total += std::max(s.duration(), 4 * s.iterations() * iteration + 4) + 4;
+    uint64_t duration = s.duration();
+    if (b.is_rapid())  // at the slowest rapid rate: 60 f_clk len / v = M len / (v 10^FeedFracDigits)
+      duration = static_cast<uint64_t>(static_cast<double>(cfg.feed_modulus) * b.length() *
+                                       std::pow(10.0, -double(cfg.frac_digits) - double(cfg.feed_frac_digits)) /
+                                       tape::kSlowestRapidMmMin);
+    total += std::max(duration, 4 * s.iterations() * iteration + 4) + 4;
     if (b.is_arc()) total += ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, 4 * s.iterations());
   }
   return total + total / 8;
@@ -99,7 +104,6 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.schedule = setup.schedule;
   co.lead_bits = SerialDda::player_lead_bits(cfg);
   co.arc_bound_blu = setup.arc_bound_blu;
-  co.tol_blu = out.tol_blu;
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);
   const uint64_t budget =
@@ -108,16 +112,22 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
 
   TrajectoryChecker& checker = *out.checker;
   const auto& progress = setup.progress;
-  auto observe = [&checker, &progress, budget](uint64_t cycle, const InterpOutputs& o) {
+  constexpr uint64_t kProgressEvery = uint64_t{1} << 22;
+  uint64_t next_progress = 0;
+  auto observe = [&checker, &progress, &next_progress, budget](uint64_t cycle, const InterpOutputs& o) {
     checker.observe(cycle, o);
-    if ((cycle & ((uint64_t{1} << 22) - 1)) == 0 && progress) progress(cycle, budget);
+    if (cycle >= next_progress && progress) {
+      progress(cycle, budget);
+      next_progress = (cycle / kProgressEvery + 1) * kProgressEvery;
+    }
   };
   FrameSource source(frames, cpf);
   const auto t0 = std::chrono::steady_clock::now();
   if (setup.engine == EngineKind::kGolden) {
     GoldenInterp dut(cfg);
     if (setup.fault) dut.inject(*setup.fault);
-    out.run = run_engine(dut, source, budget, observe);
+    out.run = setup.every_clock ? run_engine(dut, source, budget, observe)
+                                : run_engine_jumping(dut, source, budget, checker, observe);
   } else {
 #ifdef NCINTERP_CHECKER_HAS_RTL
     VerilatedInterp<Vinterp_top> dut(cfg);

@@ -21,7 +21,7 @@ double distance_to_segment(double px, double py, double dx, double dy) {
 }
 
 PathError block_path_error(const tape::Block& b, double px, double py) {
-  if (b.motion == tape::Motion::kLine)
+  if (!tape::is_arc(b.motion))
     return {distance_to_segment(px, py, static_cast<double>(b.dx), static_cast<double>(b.dy)),
             line_path_bound(b.dx, b.dy)};
   // Relative to the centre, which is at (i, j) from the block's start.
@@ -80,6 +80,15 @@ void PlayMonitor::observe(uint64_t cycle, const InterpOutputs& o) {
     pulse(o.pos_x, o.pos_y);
     cursor_pulses_ += steps;
   }
+}
+
+void PlayMonitor::observe_quiet(uint64_t cycle, const InterpOutputs& o) {
+  const uint64_t n = cycle - s_.cycles;
+  s_.cycles = cycle;
+  if (o.busy)
+    s_.busy_cycles += n;
+  else if (!o.done && !o.error)
+    (started_ ? s_.gap_cycles : s_.lead_in_cycles) += n;
 }
 
 void PlayMonitor::pulse(int64_t x, int64_t y) {
@@ -150,8 +159,12 @@ void PlayMonitor::match_timeline() {
     }
     t.first_block = cur;
     t.block_count = take;
-    for (size_t j = 0; j < take; ++j)
-      t.ideal_cycles += feed_modulus_ / static_cast<double>(blocks[cur + j].feed);
+    for (size_t j = 0; j < take; ++j) {
+      if (tape::is_rapid(blocks[cur + j].motion))
+        t.rapid = true;  // played at the machine's rapid rate: F is not the tape's
+      else
+        t.ideal_cycles += feed_modulus_ / static_cast<double>(blocks[cur + j].feed);
+    }
     cur += take;
   }
   // A run cut off by the end of the simulation does not count as played.
@@ -160,7 +173,7 @@ void PlayMonitor::match_timeline() {
   s_.blocks_played = cur;
 
   for (const BlockTiming& t : s_.timeline) {
-    if (t.block_count == 0 || t.end_cycle == 0) continue;
+    if (t.block_count == 0 || t.end_cycle == 0 || t.rapid) continue;
     if (t.saturated) {
       ++s_.saturated_blocks;
       continue;

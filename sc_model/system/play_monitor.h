@@ -39,6 +39,7 @@ struct BlockTiming {
   size_t first_block = 0;          // index into Program::blocks
   size_t block_count = 0;          // tape blocks it covers (0 = could not be matched)
   double ideal_cycles = 0;         // programmed duration: 60 f_clk / F per block, summed
+  bool rapid = false;              // covers a G00 block: no programmed duration, not timed
   uint64_t cycles() const { return end_cycle - load_cycle; }
 };
 
@@ -74,6 +75,9 @@ class PlayMonitor {
 
   // The outputs after edge `cycle` (0 = after reset). Call once per clock, in order.
   void observe(uint64_t cycle, const InterpOutputs& o);
+  // The clocks after the last observed one up to `cycle` showed o, the outputs last
+  // observed, with no step (event jumping, system_top.h): what observe() does for each.
+  void observe_quiet(uint64_t cycle, const InterpOutputs& o);
   // Closes the last block and matches the observed blocks to the tape's blocks; `last` is
   // the outputs last observed (their final state, error and position go in the summary).
   PlaySummary finish(const InterpOutputs& last);

@@ -31,7 +31,7 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     // Iterations: 2^k for a line; fewer than 2^(k+1) for an arc, whose k is that of its
     // largest coordinate about the centre (<= |I| + |X|, |J| + |Y|), and whose preparation
     // in the decoder takes ArcPrepare::clocks (docs/interpolator.md 3.5).
-    const bool arc = b.motion != tape::Motion::kLine;
+    const bool arc = tape::is_arc(b.motion);
     const uint64_t m = static_cast<uint64_t>(
         arc ? std::max(std::llabs(b.i) + std::llabs(b.dx), std::llabs(b.j) + std::llabs(b.dy))
             : std::max(std::llabs(b.dx), std::llabs(b.dy)));
@@ -39,7 +39,12 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     while (k < 62 && (m >> k) != 0) ++k;
     const uint64_t iterations = arc ? 2ull << k : 1ull << k;
     const uint64_t prepare = arc ? ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, iterations) : 0;
-    const uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
+    uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
+    if (tape::is_rapid(b.motion))  // 60 f_clk len / feed = M len / (feed 10^FeedFracDigits)
+      programmed = static_cast<uint64_t>(
+          static_cast<double>(cfg.feed_modulus) * std::hypot(double(b.dx), double(b.dy)) *
+          std::pow(10.0, -double(cfg.frac_digits) - double(cfg.feed_frac_digits)) /
+          tape::kSlowestRapidMmMin);
     // Saturated, one iteration per clock (per 2P clocks with BitSerial: SerialDda).
     const uint64_t iteration = cfg.bit_serial ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
     total += std::max(iterations * iteration + 1, programmed) + prepare + 3;
@@ -83,6 +88,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   setup.engine = opt.engine;
   setup.clock_hz = opt.clock_hz;
   setup.max_cycles = r.max_cycles;
+  setup.every_clock = opt.every_clock;
   r.vcd_path = opt.vcd_path;
   if (!opt.vcd_path.empty()) {
     r.vcd_window = resolve_vcd_window(opt.vcd_from, opt.vcd_to, frames, r.config,

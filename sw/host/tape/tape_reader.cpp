@@ -234,13 +234,16 @@ class Reader {
 
   void end_block() {
     if (motion_in_block_) {
-      if (feed_ == 0)
+      // A G00 block needs no F (it plays at the rapid rate): its feed is 0 in the Program,
+      // while an F word in it still sets the modal F for the blocks that follow.
+      const bool rapid = is_rapid(motion_);
+      if (feed_ == 0 && !rapid)
         fail(TapeError::kMissingFeed, offset_,
              "missing feed: no F programmed (or F0) for a motion block");
       block_.n = n_;
       block_.motion = motion_;
-      block_.feed = feed_;
-      if (motion_ != Motion::kLine) check_arc();
+      block_.feed = rapid ? 0 : feed_;
+      if (is_arc(motion_)) check_arc();
       program_.blocks.push_back(block_);
     }
     if (end_in_block_) {

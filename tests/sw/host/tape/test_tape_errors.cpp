@@ -46,7 +46,7 @@ std::vector<BadCase> bad_cases() {
       {"n_too_wide", kHead + "N104857^6 G01\nM02\n%\n", 4, 1},
       {"second_N", kHead + "N2 G01 X1.000 ^N3\nM02\n%\n", 5, 2},
       {"percent_inside_block", kHead + "N2 G01 X1.000^%\n", 5, 2},
-      {"unsupported_G", kHead + "N2 ^G00 X1.000\nM02\n%\n", 6, 2},
+      {"unsupported_G", kHead + "N2 ^G04 X1.000\nM02\n%\n", 6, 2},
       {"unsupported_M", kHead + "N2 ^M03\nM02\n%\n", 6, 2},
       {"unsupported_setup_G", "%\n^G20 G91\nM02\n%\n", 6, 0},
       {"truncated_no_end", kHead + "N2 G01 X1.000 F1.000\n^", 7, 2},
