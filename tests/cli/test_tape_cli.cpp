@@ -70,7 +70,7 @@ TEST_P(TapeCliExamples, EveryMethodAndArcModeMakesAPlayableTape) {
       for (const tape::Block& b : p.blocks) {
         x += b.dx;
         y += b.dy;
-        has_arcs |= b.motion != tape::Motion::kLine;
+        has_arcs |= tape::is_arc(b.motion);
       }
       EXPECT_EQ(x, end_x);
       EXPECT_EQ(y, end_y);
@@ -286,6 +286,8 @@ struct CamFile {
   int warnings;  // warning lines on stderr
   int passes;
 };
+
+void PrintTo(const CamFile& k, std::ostream* os) { *os << k.name; }
 
 class TapeCliCam : public TapeCli, public ::testing::WithParamInterface<CamFile> {};
 

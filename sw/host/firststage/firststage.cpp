@@ -101,11 +101,54 @@ std::vector<Move> pass_moves(const Contour& c, const std::vector<Move>& moves, s
   return out;
 }
 
-std::optional<SelfCrossing> crossing_in_a_pass(const Contour& c, GridPoint start, const std::vector<Move>& moves,
-                                               std::vector<Move>* in_pass) {
+// Pairs of input elements that touch where the contour comes back to a point: a CAM
+// program's lead-in ends where its lead-out starts, both tangent to the profile there, and
+// the chords of such paths cross within a chord's length of the point, where the path
+// touches itself without crossing over. Crossings of two such elements are not reported.
+class Touching {
+ public:
+  Touching(const Contour& c, double to_blu) {
+    using P = std::pair<int64_t, int64_t>;
+    const auto grid = [to_blu](Vec2 v) {
+      const GridPoint g = round_to_grid(to_blu * v);
+      return P{g.x, g.y};
+    };
+    ends_.assign(c.element_names.size(), {P{INT64_MIN, INT64_MIN}, P{INT64_MIN, INT64_MIN}});
+    std::vector<bool> seen(c.element_names.size(), false);
+    std::vector<P> visits;
+    for (const Segment& s : c.segments) {
+      visits.push_back(grid(s.start()));
+      if (s.source_index < 0 || s.source_index >= static_cast<int>(ends_.size())) continue;
+      if (!seen[s.source_index]) ends_[s.source_index].first = grid(s.start());
+      seen[s.source_index] = true;
+      ends_[s.source_index].second = grid(s.end());
+    }
+    std::sort(visits.begin(), visits.end());
+    for (size_t i = 1; i < visits.size(); ++i)
+      if (visits[i] == visits[i - 1]) twice_.push_back(visits[i]);
+  }
+  bool operator()(int ea, int eb) const {
+    if (ea < 0 || eb < 0 || ea == eb || ea >= static_cast<int>(ends_.size()) || eb >= static_cast<int>(ends_.size()))
+      return false;
+    for (const auto& p : {ends_[ea].first, ends_[ea].second})
+      if ((p == ends_[eb].first || p == ends_[eb].second) &&
+          std::binary_search(twice_.begin(), twice_.end(), p))
+        return true;
+    return false;
+  }
+
+ private:
+  std::vector<std::pair<std::pair<int64_t, int64_t>, std::pair<int64_t, int64_t>>> ends_;  // per element
+  std::vector<std::pair<int64_t, int64_t>> twice_;  // points the contour starts a segment at twice
+};
+
+std::optional<SelfCrossing> crossing_in_a_pass(const Contour& c, const FirstStageOptions& o, GridPoint start,
+                                               const std::vector<Move>& moves, std::vector<Move>* in_pass) {
+  const Touching touching(c, 1.0 / o.blu_mm);
+  const auto ignore = [&](int a, int b) { return touching(moves[a].element, moves[b].element); };
   for (size_t p = 0; p < std::max<size_t>(1, c.passes.size()); ++p) {
     *in_pass = pass_moves(c, moves, p);
-    if (const auto x = find_self_crossing(start, *in_pass)) return x;
+    if (const auto x = find_self_crossing(start, *in_pass, ignore)) return x;
   }
   return std::nullopt;
 }
@@ -119,7 +162,7 @@ void warn_self_crossing(const Contour& contour, const FirstStageOptions& o, Firs
     return std::string(buf);
   };
   std::vector<Move> in_pass;
-  if (const auto x = crossing_in_a_pass(contour, res.contour_start, res.contour_moves, &in_pass)) {
+  if (const auto x = crossing_in_a_pass(contour, o, res.contour_start, res.contour_moves, &in_pass)) {
     res.warnings.push_back(contour.file + ": warning: the contour crosses itself at " + where(*x) +
                            " (" + element_name(contour, res.contour_moves[x->move_a]) + " and " +
                            element_name(contour, res.contour_moves[x->move_b]) +
@@ -127,7 +170,7 @@ void warn_self_crossing(const Contour& contour, const FirstStageOptions& o, Firs
     return;
   }
   if (o.cutter_radius_mm <= 0) return;
-  if (const auto x = crossing_in_a_pass(contour, res.start, res.moves, &in_pass))
+  if (const auto x = crossing_in_a_pass(contour, o, res.start, res.moves, &in_pass))
     res.warnings.push_back(contour.file + ": warning: the cutter path (radius " + fmt_mm(o.cutter_radius_mm) +
                            " mm) crosses itself at " + where(*x) + " (near " +
                            element_name(contour, res.moves[x->move_a]) +
