@@ -128,4 +128,16 @@ module block_buffer #(
   assign out_block_o = block_q;
   assign out_play_o  = play_q;
 
+`ifndef SYNTHESIS
+  // Checked at every edge of every verilated run (Verilator --assert) and in every formal
+  // proof that reads this module (yosys -formal reads it; synthesis does not): only a
+  // block that can be read is popped (with the RAM, a pop before its read shows the slot
+  // would play the other slot's words).
+  always_ff @(posedge clk_i) begin
+    if (rst_ni) begin
+      a_pop_readable: assert (!pop_i || out_valid_o);
+    end
+  end
+`endif
+
 endmodule

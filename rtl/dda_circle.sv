@@ -24,8 +24,11 @@
 // pulses (the registers' enable): most clocks of a part have none, and this keeps the
 // verilated model fast.
 module dda_circle #(
-  parameter int IncWidth = 16,
-  parameter int KWidth   = $clog2(IncWidth + 1)
+  parameter int IncWidth   = 16,
+  parameter int KWidth     = $clog2(IncWidth + 1),
+  // Arcs can be loaded (interp_top's CircleMode); without, every block is a line and the
+  // arc logic is not built.
+  parameter bit CircleMode = 1'b1
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -112,7 +115,8 @@ module dda_circle #(
     settle = {step, acc_new, mag_new, cnt_new};
   endfunction
 
-  logic                   iterate, active;
+  // line: the loaded block is a line (always, without circle mode).
+  logic                   line, iterate, active;
   logic [IncWidth:0]      kpow_load;
   // The two half-steps of an iteration: A's first, then B's, which integrates the
   // magnitude A has just moved. B's sum is formed for both outcomes of A's half-step
@@ -125,6 +129,7 @@ module dda_circle #(
   logic [IncWidth-1:0]    moved_a, moved_b;
   logic [IncWidth:0]      first_sum, kept_sum, stepped_sum;
 
+  assign line      = !CircleMode || line_q;
   assign iterate   = strobe_i && !done_o;
   assign active    = load_i || iterate || step_x_q || step_y_q;
   assign kpow_load = (IncWidth + 1)'(1) << k_i;
@@ -164,14 +169,14 @@ module dda_circle #(
       end else if (iterate) begin
         moved_a   = mag_a_q + {{(IncWidth - 1){!grow_a_q}}, 1'b1};
         moved_b   = mag_b_q + {{(IncWidth - 1){!grow_b_q}}, 1'b1};
-        first_sum = integrate(line_q, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0);
+        first_sum = integrate(line, kpow_q, acc_a_q, mag_b_q, cnt_b_q == '0);
         {first_step, first_acc, first_mag, first_cnt} =
-            settle(line_q, kpow_q, first_sum, moved_a, mag_a_q, cnt_a_q);
-        kept_sum    = integrate(line_q, kpow_q, acc_b_q, mag_a_q, cnt_a_q == '0);
-        stepped_sum = integrate(line_q, kpow_q, acc_b_q, line_q ? mag_a_q : moved_a,
+            settle(line, kpow_q, first_sum, moved_a, mag_a_q, cnt_a_q);
+        kept_sum    = integrate(line, kpow_q, acc_b_q, mag_a_q, cnt_a_q == '0);
+        stepped_sum = integrate(line, kpow_q, acc_b_q, line ? mag_a_q : moved_a,
                                 cnt_a_q == IncWidth'(1));
         {second_step, second_acc, second_mag, second_cnt} = settle(
-            line_q, kpow_q, first_step ? stepped_sum : kept_sum, moved_b, mag_b_q, cnt_b_q);
+            line, kpow_q, first_step ? stepped_sum : kept_sum, moved_b, mag_b_q, cnt_b_q);
         // Swap the roles: B went second, so it goes first in the next iteration.
         acc_a_d  = second_acc;  mag_a_d  = second_mag;  cnt_a_d  = second_cnt;
         acc_b_d  = first_acc;   mag_b_d  = first_mag;   cnt_b_d  = first_cnt;
@@ -229,6 +234,21 @@ module dda_circle #(
   assign dir_y_o  = dir_y_q;
   // An arc ends with its last pulse, a line after its 2^k iterations (its last pulse may come
   // one iteration earlier, and the feed step S = F 2^k is timed for all of them).
-  assign done_o   = line_q ? rem_q == '0 : cnt_a_q == '0 && cnt_b_q == '0;
+  assign done_o   = line ? rem_q == '0 : cnt_a_q == '0 && cnt_b_q == '0;
+
+`ifndef SYNTHESIS
+  // The invariant the step detection relies on, checked at every iteration of every
+  // verilated run (Verilator --assert) and in every formal proof that reads this module
+  // (yosys -formal; synthesis does not): every value is below 2^k, so an integrator's sum
+  // is below 2^(k+1) and its carry out of bit k is the only step it can make: at most one
+  // step per axis per iteration.
+  always_ff @(posedge clk_i) begin
+    if (rst_ni && iterate) begin
+      a_below_2k: assert ({1'b0, acc_a_q} < kpow_q && {1'b0, acc_b_q} < kpow_q &&
+                          {1'b0, mag_a_q} < kpow_q && {1'b0, mag_b_q} < kpow_q &&
+                          {1'b0, cnt_a_q} <= kpow_q && {1'b0, cnt_b_q} <= kpow_q);
+    end
+  end
+`endif
 
 endmodule

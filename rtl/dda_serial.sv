@@ -36,8 +36,11 @@
 // it was the block's last. A strobe while an iteration runs is ignored: the feed generator
 // never sends one then (feed_generator.sv, LeadBits).
 module dda_serial #(
-  parameter int IncWidth = 16,   // >= 2
-  parameter int KWidth   = $clog2(IncWidth + 1)
+  parameter int IncWidth   = 16,   // >= 2
+  parameter int KWidth     = $clog2(IncWidth + 1),
+  // Arcs can be loaded (interp_top's CircleMode); without, every block is a line and the
+  // arc logic is not built.
+  parameter bit CircleMode = 1'b1
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -100,12 +103,14 @@ module dda_serial #(
   logic                yzero_q, yone_q;
   logic                step_x_q, step_y_q;
 
-  logic                active, first_bit, top_bit, below_k, pass_end, second;
+  // line: the loaded block is a line (always, without circle mode).
+  logic                line, active, first_bit, top_bit, below_k, pass_end, second;
   logic                c_is_y, u_is_y, u_grow, u_mag, u_cnt, c_acc, o_mag, o_zero, c_zero;
   logic                mag_add, mag_b, mag_sum, mag_cout, cnt_b, cnt_sum, cnt_cout;
   logic                zrun_d, orun_d, addend, acc_sum, acc_cout, acc_bit, step, pass_step;
   logic                g_zero, g_one, yzero_d, yone_d;
 
+  assign line      = !CircleMode || line_q;
   assign iterate_o = strobe_i && !run_q && !done_q && !load_i;
   assign active    = !load_i && (run_q || iterate_o);
   assign first_bit = bit_q == '0;
@@ -127,9 +132,9 @@ module dda_serial #(
     if (words_q) begin
       cur[AccX] = top_bit;
       cur[AccY] = top_bit;
-      cur[MagX] = line_q ? cnt_y_bit_i : x_bit_i;
-      cur[MagY] = line_q ? cnt_x_bit_i : y_bit_i;
-      cur[CntX] = line_q ? below_k : cnt_x_bit_i;
+      cur[MagX] = line ? cnt_y_bit_i : x_bit_i;
+      cur[MagY] = line ? cnt_x_bit_i : y_bit_i;
+      cur[CntX] = line ? below_k : cnt_x_bit_i;
       cur[CntY] = cnt_y_bit_i;
     end
   end
@@ -154,8 +159,8 @@ module dda_serial #(
       u_mag   = u_is_y ? cur[MagY] : cur[MagX];
       u_cnt   = u_is_y ? cur[CntY] : cur[CntX];
       mag_add = pend_q && (first_bit || !u_grow);
-      mag_b   = line_q ? cur[AccY] : mag_add;
-      cnt_b   = line_q || pend_q;
+      mag_b   = line ? cur[AccY] : mag_add;
+      cnt_b   = line || pend_q;
       {mag_cout, mag_sum} = {1'b0, u_mag} + {1'b0, mag_b} + {1'b0, !first_bit && carry_mag_q};
       {cnt_cout, cnt_sum} = {1'b0, u_cnt} + {1'b0, cnt_b} + {1'b0, !first_bit && carry_cnt_q};
       {zrun_d, orun_d}  = zero_one(first_bit, zrun_q, orun_q, cnt_sum);
@@ -172,7 +177,7 @@ module dda_serial #(
         o_zero = c_is_y ? zero_x_q : (words_q ? yzero_d : zero_y_q);
         c_zero = zrun_d;
       end
-      addend  = o_mag || (top_bit && o_zero && !line_q);
+      addend  = o_mag || (top_bit && o_zero && !line);
       {acc_cout, acc_sum} = {1'b0, c_acc} + {1'b0, addend} + {1'b0, !first_bit && carry_acc_q};
       acc_bit = below_k && acc_sum;  // clearing bit k subtracts 2^k
       step    = acc_cout && !c_zero;
@@ -193,7 +198,7 @@ module dda_serial #(
     carry_x_o = 1'b0;
     carry_y_o = 1'b0;
     if (active && top_bit) begin
-      if (line_q) begin
+      if (line) begin
         carry_x_o = !second && acc_cout;
         carry_y_o = !second && mag_cout;
       end else if (second) begin
@@ -207,7 +212,7 @@ module dda_serial #(
   // acc_X, acc_Y and iterations left in its first pass; the others unchanged.
   always_comb begin
     next = cur;
-    if (line_q) begin
+    if (line) begin
       if (!second) begin
         next[AccX] = acc_bit;
         next[AccY] = below_k && mag_sum;
@@ -269,7 +274,7 @@ module dda_serial #(
         if (pass_end) begin
           words_q <= 1'b0;
           // A line's passes keep U = X (half 0, 1); an arc's go round X Y Y X.
-          half_q  <= {half_q[1] ^ (half_q[0] && !line_q), !half_q[0]};
+          half_q  <= {half_q[1] ^ (half_q[0] && !line), !half_q[0]};
           pend_q  <= pass_step;
           if (u_is_y) {zero_y_q, one_y_q} <= {zrun_d, orun_d};
           else        {zero_x_q, one_x_q} <= {zrun_d, orun_d};
@@ -278,7 +283,7 @@ module dda_serial #(
           if (!second) last_q <= !cnt_cout;
           if (second) begin
             run_q  <= 1'b0;
-            done_q <= line_q ? last_q : zrun_d && (g_zero || g_one && pass_step);
+            done_q <= line ? last_q : zrun_d && (g_zero || g_one && pass_step);
           end
         end
         bit_q <= next_bit;
@@ -293,5 +298,18 @@ module dda_serial #(
   assign words_o  = words_q;
   assign bit_o    = bit_q;
   assign done_o   = done_q;
+
+`ifndef SYNTHESIS
+  // The invariant the schedule relies on, checked at every running clock of every
+  // verilated run (Verilator --assert) and in every formal proof that reads this module:
+  // every value is below 2^k, so all its bits from k on are 0 and a half-step is known at
+  // clock k - 1 of its pass. (A line's iterations left wrap below 0 in its last iteration,
+  // which ends the block: that count is not held to it.)
+  always_ff @(posedge clk_i) begin
+    if (rst_ni && active && !below_k) begin
+      a_below_2k: assert ((cur & ~(line ? 6'(1 << CntX) : 6'b0)) == '0);
+    end
+  end
+`endif
 
 endmodule

@@ -119,4 +119,16 @@ module feed_generator #(
 
   assign saturated_o = saturated_q;
 
+`ifndef SYNTHESIS
+  // The invariant the shared next-state logic relies on (its 'x defaults are used only
+  // while running), checked at every edge of every verilated run (Verilator --assert) and
+  // in every formal proof that reads this module (yosys -formal; synthesis does not): a
+  // block loads only when the player is idle or finishing, so load and run never meet.
+  always_ff @(posedge clk_i) begin
+    if (rst_ni) begin
+      a_load_not_running: assert (!(load_i && run_i));
+    end
+  end
+`endif
+
 endmodule

@@ -29,15 +29,21 @@ module interp_top #(
   parameter int OffsetWidth    = 32,
   // Width of feed_modulus_i.
   parameter int ModulusWidth   = 48,
-  // The arithmetic: 0 = parallel; 1 = bit-serial, the board's choice (docs/interpolator.md
-  // 3.2, 3.5, 4 and 5.6): the DDA, of the player and of an arc's dry run, is dda_serial.sv,
-  // 2P clocks per iteration (P = W rounded up to a power of two) instead of one, each
-  // digit's x10 + d a pass of NumWidth clocks on a one-bit adder (tape_word_parser.sv),
-  // and the block buffer in block RAM, whose registered read makes a block loadable one
-  // clock later (block_buffer.sv). Fewer logic cells (docs/bit-widths.md section 6); the
-  // player's top rate is one iteration per 2P clocks, and 3.5 says when the slower dry run
-  // leaves gaps.
-  parameter bit BitSerial   = 1'b0
+  // The microarchitecture ("arch"; the golden model's InterpConfig::arch, every command's
+  // --arch): 1 = serial, what the boards ship and the default; 0 = parallel. Serial
+  // (docs/interpolator.md 3.2, 3.5, 4 and 5.6): the DDA, of the player and of an arc's dry
+  // run, is dda_serial.sv, 2P clocks per iteration (P = W rounded up to a power of two)
+  // instead of one, each digit's x10 + d a pass of NumWidth clocks on a one-bit adder
+  // (tape_word_parser.sv), and the block buffer in block RAM, whose registered read makes a
+  // block loadable one clock later (block_buffer.sv). Fewer logic cells (docs/bit-widths.md);
+  // the player's top rate is one iteration per 2P clocks, and 3.5 says when the slower dry
+  // run leaves gaps.
+  parameter bit BitSerial   = 1'b1,
+  // Circle mode (G02/G03 quadrant arcs; the golden model's InterpConfig::circle_mode): 1
+  // built in; 0 the machine of paper 000, lines only, whose first stage writes only chords:
+  // an arc block is refused with error 13 (ErrNoCircleMode), and the arc's checks, dry run
+  // and the DDA's arc logic are not built (the iCEstick's configuration, docs/board.md).
+  parameter bit CircleMode  = 1'b1
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -77,61 +83,29 @@ module interp_top #(
   localparam int ExactStepWidth = FeedWidth + IncWidth + 1;
   localparam int StepWidth = ExactStepWidth < ModulusWidth - LeadBits + 1 ? ExactStepWidth
                                                                           : ModulusWidth - LeadBits + 1;
-  // A decoded block as the buffer stores it: N, motion, dx, dy (sign + magnitude), |i|, |j|
-  // (the arc's start about its centre), k, for an arc the growth of |x| and |y|, and S
-  // (last: the buffer shows the low bits of the playing block to the feed generator).
-  // The codes are interp_pkg's; the struct is declared here because its widths are this
-  // module's parameters (0_interp_pkg.sv explains why a package cannot hold it).
-  typedef struct packed {
-    logic [SeqWidth-1:0]  n;
-    logic [interp_pkg::MotionWidth-1:0] motion;  // an interp_pkg::motion_e code
-    logic                 dx_neg;
-    logic [IncWidth-1:0]  dx;
-    logic                 dy_neg;
-    logic [IncWidth-1:0]  dy;
-    logic [IncWidth-1:0]  i;
-    logic [IncWidth-1:0]  j;
-    logic                 step_over;  // S >= 2^StepWidth
-    logic [KWidth-1:0]    k;
-    logic                 grow_x;
-    logic                 grow_y;
-    logic [StepWidth-1:0] step;
-  } block_t;
-
-  // Decoder -> buffer.
-  logic                   dec_valid, buf_ready;
-  logic [SeqWidth-1:0]    dec_n;
-  logic [1:0]             dec_motion;
-  logic [IncWidth-1:0]    dec_dx, dec_dy, dec_i, dec_j;
-  logic                   dec_dx_neg, dec_dy_neg;
-  logic [StepWidth-1:0]   dec_step;
-  logic                   dec_step_over;
-  logic [KWidth-1:0]      dec_k;
-  logic                   dec_grow_x, dec_grow_y;
-  logic                   dec_end, dec_tape_ended, dec_err;
-  logic [3:0]             dec_err_code;
-  logic [SeqWidth-1:0]    dec_err_block;
-  logic [OffsetWidth-1:0] dec_err_offset;
-
-  // Buffer -> player.
-  logic                   next_valid;
-  block_t                 dec_block, next_block;
+  // block_t, the decoded block (block_record.svh): the decoder fills it, the buffer stores
+  // it, the player reads it.
+`include "block_record.svh"
   // The buffer's width, from the struct: Yosys 0.23 takes $bits of a signal only, Icarus 11
   // (bench/sim) evaluates $bits of a struct signal in a parameter wrongly (2): each gets the
   // form it reads right.
+  block_t dec_block, next_block;
 `ifdef __ICARUS__
   localparam int BlockWidth = $bits(block_t);
 `else
   localparam int BlockWidth = $bits(dec_block);
 `endif
-  logic [SeqWidth-1:0]    next_n;
-  logic [IncWidth-1:0]    next_dx, next_dy, next_i, next_j;
-  logic                   next_dx_neg, next_dy_neg;
-  logic [1:0]             next_motion;
-  logic [StepWidth-1:0]   next_step, play_step;  // S of the next block, of the playing one
-  logic                   next_step_over;
-  logic [KWidth-1:0]      next_k;
-  logic                   next_grow_x, next_grow_y, next_arc;
+
+  // Decoder -> buffer.
+  logic                   dec_valid, buf_ready;
+  logic                   dec_end, dec_tape_ended, dec_err;
+  logic [3:0]             dec_err_code;
+  logic [SeqWidth-1:0]    dec_err_block;
+  logic [OffsetWidth-1:0] dec_err_offset;
+
+  // Buffer -> player: the next block (next_valid), and S of the playing one.
+  logic                   next_valid, next_arc;
+  logic [StepWidth-1:0]   play_step;
 
   // Player: the feed generator's strobes iterate the DDA; its carries count the positions.
   // finished: the playing block's iterations are over (the DDA's done). words: the serial
@@ -147,33 +121,14 @@ module interp_top #(
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
-    .StepWidth(StepWidth), .BitSerial(BitSerial)
+    .StepWidth(StepWidth), .BitSerial(BitSerial), .CircleMode(CircleMode)
   ) u_decoder (
     .clk_i, .rst_ni,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
-    .blk_valid_o(dec_valid), .blk_ready_i(buf_ready),
-    .blk_n_o(dec_n), .blk_motion_o(dec_motion),
-    .blk_dx_o(dec_dx), .blk_dx_neg_o(dec_dx_neg), .blk_dy_o(dec_dy), .blk_dy_neg_o(dec_dy_neg),
-    .blk_i_o(dec_i), .blk_j_o(dec_j),
-    .blk_step_o(dec_step), .blk_step_over_o(dec_step_over), .blk_k_o(dec_k),
-    .blk_grow_x_o(dec_grow_x), .blk_grow_y_o(dec_grow_y),
+    .blk_valid_o(dec_valid), .blk_ready_i(buf_ready), .blk_o(dec_block),
     .end_o(dec_end), .tape_ended_o(dec_tape_ended), .err_o(dec_err), .err_code_o(dec_err_code),
     .err_block_o(dec_err_block), .err_offset_o(dec_err_offset)
   );
-
-  assign dec_block.n      = dec_n;
-  assign dec_block.motion = dec_motion;
-  assign dec_block.dx_neg = dec_dx_neg;
-  assign dec_block.dx     = dec_dx;
-  assign dec_block.dy_neg = dec_dy_neg;
-  assign dec_block.dy     = dec_dy;
-  assign dec_block.i      = dec_i;
-  assign dec_block.j      = dec_j;
-  assign dec_block.step   = dec_step;
-  assign dec_block.step_over = dec_step_over;
-  assign dec_block.k      = dec_k;
-  assign dec_block.grow_x = dec_grow_x;
-  assign dec_block.grow_y = dec_grow_y;
 
   // With BitSerial the buffer is a block RAM, but N (the first field: the top bits) stays in
   // flip-flops, so a board that leaves block_n_o unused loses its logic (block_buffer.sv).
@@ -186,20 +141,7 @@ module interp_top #(
     .out_valid_o(next_valid), .out_block_o(next_block), .out_play_o(play_step)
   );
 
-  assign next_n      = next_block.n;
-  assign next_motion = next_block.motion;
-  assign next_dx_neg = next_block.dx_neg;
-  assign next_dx     = next_block.dx;
-  assign next_dy_neg = next_block.dy_neg;
-  assign next_dy     = next_block.dy;
-  assign next_i      = next_block.i;
-  assign next_j      = next_block.j;
-  assign next_step   = next_block.step;
-  assign next_step_over = next_block.step_over;
-  assign next_k      = next_block.k;
-  assign next_grow_x = next_block.grow_x;
-  assign next_grow_y = next_block.grow_y;
-  assign next_arc = next_motion != interp_pkg::MotionLine;
+  assign next_arc = next_block.motion != interp_pkg::MotionLine;
 
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || finished);
@@ -207,7 +149,8 @@ module interp_top #(
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits))
   u_feed (
     .clk_i, .rst_ni,
-    .load_i(load), .step_i(next_step), .step_over_i(next_step_over), .run_step_i(play_step),
+    .load_i(load), .step_i(next_block.step), .step_over_i(next_block.step_over),
+    .run_step_i(play_step),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
   );
@@ -219,19 +162,20 @@ module interp_top #(
   // it.
   logic circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x, circle_step_y;
   logic circle_dir_y, circle_done;
-  dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth)) u_circle (
+  dda_circle #(.IncWidth(IncWidth), .KWidth(KWidth), .CircleMode(CircleMode)) u_circle (
     .clk_i, .rst_ni,
-    .load_i(load && !BitSerial), .line_i(!next_arc), .k_i(next_k), .x_i(next_i),
-    .y_i(next_j), .cnt_x_i(next_dx), .cnt_y_i(next_dy), .grow_x_i(next_grow_x),
-    .grow_y_i(next_grow_y), .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
+    .load_i(load && !BitSerial), .line_i(!next_arc), .k_i(next_block.k), .x_i(next_block.i),
+    .y_i(next_block.j), .cnt_x_i(next_block.dx), .cnt_y_i(next_block.dy),
+    .grow_x_i(next_block.grow_x), .grow_y_i(next_block.grow_y),
+    .dir_x_i(!next_block.dx_neg), .dir_y_i(!next_block.dy_neg),
     .strobe_i(strobe && !BitSerial),
     .carry_x_o(circle_carry_x), .carry_y_o(circle_carry_y),
     .step_x_o(circle_step_x), .dir_x_o(circle_dir_x), .step_y_o(circle_step_y),
     .dir_y_o(circle_dir_y), .done_o(circle_done)
   );
   if (BitSerial) begin : g_serial
-    /* verilator lint_off UNUSEDSIGNAL */
     logic iterate;  // the feed generator's strobes are the iterations
+    /* verilator lint_off UNUSEDSIGNAL */
     logic [6:0] unused_circle;
     /* verilator lint_on UNUSEDSIGNAL */
     assign unused_circle = {circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x,
@@ -242,18 +186,30 @@ module interp_top #(
                                       input logic [$clog2(IncWidth)-1:0] i);
       word_bit = 32'(i) < IncWidth ? word[i] : 1'b0;
     endfunction
-    dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth)) u_serial (
+    dda_serial #(.IncWidth(IncWidth), .KWidth(KWidth), .CircleMode(CircleMode)) u_serial (
       .clk_i, .rst_ni,
-      .load_i(load), .line_i(!next_arc), .k_i(next_k), .x_bit_i(word_bit(next_i, bit_q)),
-      .y_bit_i(word_bit(next_j, bit_q)), .cnt_x_bit_i(word_bit(next_dx, bit_q)),
-      .cnt_y_bit_i(word_bit(next_dy, bit_q)), .bit_o(bit_q),
-      .grow_x_i(next_grow_x), .grow_y_i(next_grow_y),
-      .dir_x_i(!next_dx_neg), .dir_y_i(!next_dy_neg),
+      .load_i(load), .line_i(!next_arc), .k_i(next_block.k),
+      .x_bit_i(word_bit(next_block.i, bit_q)), .y_bit_i(word_bit(next_block.j, bit_q)),
+      .cnt_x_bit_i(word_bit(next_block.dx, bit_q)), .cnt_y_bit_i(word_bit(next_block.dy, bit_q)),
+      .bit_o(bit_q), .grow_x_i(next_block.grow_x), .grow_y_i(next_block.grow_y),
+      .dir_x_i(!next_block.dx_neg), .dir_y_i(!next_block.dy_neg),
       .strobe_i(strobe), .iterate_o(iterate),
       .carry_x_o(carry_x), .carry_y_o(carry_y),
       .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
       .words_o(words), .done_o(finished)
     );
+`ifndef SYNTHESIS
+    // Checked at every edge of every verilated run (Verilator --assert) and in the formal
+    // proofs of the machine (yosys -formal; synthesis does not): every strobe of a block
+    // that is not saturated starts an iteration. The feed generator's lead keeps its strobes
+    // 2P clocks apart, the length of an iteration, so none comes while one runs and none is
+    // lost (a saturated block strobes every clock and iterates as fast as the DDA can).
+    always_ff @(posedge clk_i) begin
+      if (rst_ni) begin
+        a_strobe_iterates: assert (!strobe || iterate || saturated);
+      end
+    end
+`endif
   end else begin : g_parallel
     assign {carry_x, carry_y, step_x_o, dir_x_o, step_y_o, dir_y_o, finished} =
         {circle_carry_x, circle_carry_y, circle_step_x, circle_dir_x, circle_step_y,
@@ -275,7 +231,7 @@ module interp_top #(
     block_n_d = block_n_q;
     if (load) begin
       busy_d    = 1'b1;
-      block_n_d = next_n;
+      block_n_d = next_block.n;
     end else if (busy_q && finished) begin
       busy_d = 1'b0;  // finished with no next block: a gap (or the end)
     end

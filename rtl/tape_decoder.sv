@@ -44,47 +44,44 @@ module tape_decoder #(
   parameter int StepWidth      = FeedWidth + IncWidth + 1,
   // The per-block arithmetic in parallel (0) or bit-serial (1, the board's choice): the
   // arc's dry run (arc_prepare.sv) and each digit's x10 + d (tape_word_parser.sv).
-  parameter bit BitSerial      = 1'b0
+  parameter bit BitSerial      = 1'b0,
+  // Circle mode built in (interp_top's CircleMode); without it a G02/G03 word is an error
+  // (ErrNoCircleMode), I and J are read but not kept, and there is no arc preparation.
+  parameter bit CircleMode     = 1'b1
 ) (
-  input  logic                   clk_i,
-  input  logic                   rst_ni,
-  // Tape reader.
-  input  logic [7:0]             frame_i,
-  input  logic                   frame_valid_i,
-  input  logic                   tape_end_i,
-  output logic                   frame_ready_o,
-  // The decoded motion block, valid while held; taken at an edge with blk_ready_i.
-  output logic                   blk_valid_o,
-  input  logic                   blk_ready_i,
-  output logic [SeqWidth-1:0]    blk_n_o,
-  output logic [1:0]             blk_motion_o,
-  output logic [IncWidth-1:0]    blk_dx_o,
-  output logic                   blk_dx_neg_o,
-  output logic [IncWidth-1:0]    blk_dy_o,
-  output logic                   blk_dy_neg_o,
-  output logic [IncWidth-1:0]    blk_i_o,
-  output logic [IncWidth-1:0]    blk_j_o,
-  // The feed generator's step S: F << k for a line, F * N for an arc (N < 2^(W+1)), modulo
-  // 2^StepWidth, and S >= 2^StepWidth (the block is saturated).
-  output logic [StepWidth-1:0]   blk_step_o,
-  output logic                   blk_step_over_o,
-  // k of the block: the line DDA's (bit length of max(|dx|, |dy|)) or the circle DDA's (of
-  // the largest coordinate about the centre); for an arc, whether |x|, |y| grow.
-  output logic [$clog2(IncWidth+1)-1:0] blk_k_o,
-  output logic                   blk_grow_x_o,
-  output logic                   blk_grow_y_o,
-  // End of program decoded and its last block handed over; trailing frames are checked.
-  output logic                   end_o,
-  // The reader has delivered every frame (tape_end_i, registered).
-  output logic                   tape_ended_o,
-  // An error is held (the decoder has stopped).
-  output logic                   err_o,
-  output logic [3:0]             err_code_o,
-  output logic [SeqWidth-1:0]    err_block_o,
-  output logic [OffsetWidth-1:0] err_offset_o
+  // The ports are declared below, after block_t (block_record.svh), which the block's
+  // port has as its type and which needs the parameters above.
+  clk_i, rst_ni, frame_i, frame_valid_i, tape_end_i, frame_ready_o,
+  blk_valid_o, blk_ready_i, blk_o,
+  end_o, tape_ended_o, err_o, err_code_o, err_block_o, err_offset_o
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
+`include "block_record.svh"
+
+  input  logic                   clk_i;
+  input  logic                   rst_ni;
+  // Tape reader.
+  input  logic [7:0]             frame_i;
+  input  logic                   frame_valid_i;
+  input  logic                   tape_end_i;
+  output logic                   frame_ready_o;
+  // The decoded motion block, valid while held; taken at an edge with blk_ready_i. Its S:
+  // F << k for a line, F * N for an arc (N < 2^(W+1)), modulo 2^StepWidth, and whether
+  // S >= 2^StepWidth (the block is saturated).
+  output logic                   blk_valid_o;
+  input  logic                   blk_ready_i;
+  output block_t                 blk_o;
+  // End of program decoded and its last block handed over; trailing frames are checked.
+  output logic                   end_o;
+  // The reader has delivered every frame (tape_end_i, registered).
+  output logic                   tape_ended_o;
+  // An error is held (the decoder has stopped).
+  output logic                   err_o;
+  output logic [3:0]             err_code_o;
+  output logic [SeqWidth-1:0]    err_block_o;
+  output logic [OffsetWidth-1:0] err_offset_o;
+
   // The word parser's value width: the widest register a word fills.
   localparam int NumWidth0 = IncWidth > FeedWidth ? IncWidth : FeedWidth;
   localparam int NumWidth1 = NumWidth0 > SeqWidth ? NumWidth0 : SeqWidth;
@@ -165,6 +162,8 @@ module tape_decoder #(
   logic [3:0]             fail_code;
   logic [OffsetWidth-1:0] fail_offset;
   logic                   word_ok;      // the word ended by this frame was committed
+  logic [3:0]             word_refusal; // else why not: an unsupported code, or an arc
+                                        // without circle mode
   logic                   word_commit;  // a word ends at this edge (its register loads)
   logic                   clear_block;  // the block's per-block registers clear at this edge
   // The block being prepared (StPrepare); for an arc, arc_prepare's result is in the clock
@@ -208,7 +207,7 @@ module tape_decoder #(
   );
 
   assign preparing = state_q == StPrepare;
-  assign in_arc    = preparing && motion_q != interp_pkg::MotionLine;
+  assign in_arc    = CircleMode && preparing && motion_q != interp_pkg::MotionLine;
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
@@ -222,7 +221,7 @@ module tape_decoder #(
     // away (no gate per next-state bit).
     {state_d, n_d, motion_d, feed_d,
      n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
-     step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok,
+     step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, word_refusal,
      step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
      step_add} = 'x;
     word_commit = 1'b0;
@@ -250,6 +249,7 @@ module tape_decoder #(
       fail_code     = interp_pkg::ErrParity;
       fail_offset   = offset;
       word_ok       = 1'b1;
+      word_refusal  = interp_pkg::ErrUnsupportedCode;
 
       if (take) begin
         if (parity_err) begin
@@ -280,16 +280,21 @@ module tape_decoder #(
                     // A G or M code is <= 99 (the word parser's limit for them): its
                     // low 7 bits are all of it, so only those are compared.
                     interp_pkg::ChG: begin
-                      if (word_value[6:0] >= 7'd1 && word_value[6:0] <= 7'd3) begin
-                        motion_d = word_value[1:0];  // G01, G02, G03
+                      if (interp_pkg::g_motion(word_value[6:0])) begin
+                        // The G number is the motion code.
+                        motion_d = word_value[interp_pkg::MotionWidth-1:0];
                         motion_blk_d = 1'b1;
-                      end else if (!(word_value[6:0] == 7'd17 || word_value[6:0] == 7'd21 ||
-                                     word_value[6:0] == 7'd91 || word_value[6:0] == 7'd93)) begin
+                        // Without circle mode an arc's G word is refused where it stands.
+                        if (!CircleMode && motion_d != interp_pkg::MotionLine) begin
+                          word_ok = 1'b0;
+                          word_refusal = interp_pkg::ErrNoCircleMode;
+                        end
+                      end else if (!interp_pkg::g_setting(word_value[6:0])) begin
                         word_ok = 1'b0;
                       end
                     end
                     interp_pkg::ChM: begin
-                      if (word_value[6:0] == 7'd2 || word_value[6:0] == 7'd30) end_blk_d = 1'b1;
+                      if (interp_pkg::m_end(word_value[6:0])) end_blk_d = 1'b1;
                       else word_ok = 1'b0;
                     end
                     // X, Y, I, J load their registers (load_dx ... below).
@@ -299,7 +304,7 @@ module tape_decoder #(
                   endcase
                   if (!word_ok) begin
                     fail = 1'b1;
-                    fail_code = interp_pkg::ErrUnsupportedCode;
+                    fail_code = word_refusal;
                     fail_offset = word_offset;
                   end
                 end
@@ -419,8 +424,9 @@ module tape_decoder #(
 
   assign load_dx = word_commit && word_letter == interp_pkg::ChX;
   assign load_dy = word_commit && word_letter == interp_pkg::ChY;
-  assign load_i  = word_commit && word_letter == interp_pkg::ChI;
-  assign load_j  = word_commit && word_letter == interp_pkg::ChJ;
+  // Without circle mode I and J are read (the syntax is the same) but not kept.
+  assign load_i  = CircleMode && word_commit && word_letter == interp_pkg::ChI;
+  assign load_j  = CircleMode && word_commit && word_letter == interp_pkg::ChJ;
   always_ff @(posedge clk_i) begin
     if (!rst_ni || clear_block) begin
       {dx_neg_q, dx_q, dy_neg_q, dy_q, i_neg_q, i_q, j_neg_q, j_q} <= '0;
@@ -439,16 +445,26 @@ module tape_decoder #(
   end
 
   // Arc blocks: the checks and the dry run that counts the circle DDA's iterations N (the
-  // decoder adds F at each, above).
-  arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth), .BitSerial(BitSerial)) u_arc (
-    .clk_i, .rst_ni, .run_i(in_arc),
-    .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
-    .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
-    .ccw_i(motion_q == interp_pkg::MotionArcCcw),
-    .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .iterate_o(arc_iterate),
-    .shift_o(arc_shift),
-    .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
-  );
+  // decoder adds F at each, above). Without circle mode no arc is ever prepared.
+  if (CircleMode) begin : g_arcs
+    arc_prepare #(.IncWidth(IncWidth), .KWidth(KWidth), .BitSerial(BitSerial)) u_arc (
+      .clk_i, .rst_ni, .run_i(in_arc),
+      .dx_i(dx_q), .dx_neg_i(dx_neg_q), .dy_i(dy_q), .dy_neg_i(dy_neg_q),
+      .i_i(i_q), .i_neg_i(i_neg_q), .j_i(j_q), .j_neg_i(j_neg_q),
+      .ccw_i(motion_q == interp_pkg::MotionArcCcw),
+      .done_o(arc_done), .err_o(arc_err), .err_code_o(arc_code), .iterate_o(arc_iterate),
+      .shift_o(arc_shift),
+      .k_o(arc_k), .grow_x_o(arc_grow_x), .grow_y_o(arc_grow_y)
+    );
+  end else begin : g_lines
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic unused_signs;  // an arc's I and J are never read
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign unused_signs = i_neg_q ^ j_neg_q;
+    assign {arc_done, arc_err, arc_iterate, arc_shift, arc_grow_x, arc_grow_y} = '0;
+    assign arc_code = interp_pkg::ErrNone;
+    assign arc_k = '0;
+  end
 
   // The registers change only when a frame is processed, an arc is prepared, a held block
   // is handed over or the tape has ended (update).
@@ -494,20 +510,20 @@ module tape_decoder #(
     end
   end
 
-  assign blk_valid_o   = state_q == StHold;
-  assign blk_n_o       = n_q;
-  assign blk_motion_o  = motion_q;
-  assign blk_dx_o      = dx_q;
-  assign blk_dx_neg_o  = dx_neg_q;
-  assign blk_dy_o      = dy_q;
-  assign blk_dy_neg_o  = dy_neg_q;
-  assign blk_i_o       = i_q;
-  assign blk_j_o       = j_q;
-  assign blk_step_o    = step_q;
-  assign blk_step_over_o = step_over_q;
-  assign blk_k_o       = k_q;
-  assign blk_grow_x_o  = grow_x_q;
-  assign blk_grow_y_o  = grow_y_q;
+  assign blk_o.n         = n_q;
+  assign blk_o.motion    = motion_q;
+  assign blk_o.dx        = dx_q;
+  assign blk_o.dx_neg    = dx_neg_q;
+  assign blk_o.dy        = dy_q;
+  assign blk_o.dy_neg    = dy_neg_q;
+  assign blk_o.i         = i_q;
+  assign blk_o.j         = j_q;
+  assign blk_o.step      = step_q;
+  assign blk_o.step_over = step_over_q;
+  assign blk_o.k         = k_q;
+  assign blk_o.grow_x    = grow_x_q;
+  assign blk_o.grow_y    = grow_y_q;
+  assign blk_valid_o     = state_q == StHold;
   assign end_o         = state_q == StEnd;
   assign tape_ended_o  = tape_end_q;
   assign err_o         = state_q == StError;

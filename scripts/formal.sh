@@ -17,10 +17,14 @@
 #
 # Usage: scripts/formal.sh [--deep] [--solver z3|boolector] [--work DIR] [--jobs N]
 #                          [--only PROOF] [--mutant MUTATION] [--no-mutants] [--list]
+#                          [--check-mutants] [--mutations FILE]
 #   --deep       the longer proofs (bigger widths, deeper BMC: the proofs file's deep columns)
 #   --only P     run proof P only (exit 0 if it passes)
 #   --mutant M   run mutation M only (exit 0 if its proof fails on the named assertion)
 #   --no-mutants proofs only
+#   --check-mutants  no solver: every mutation names a proof and a file, and its line
+#                `from` is found exactly once there (a stale mutation fails at once)
+#   --mutations F    read the mutations from F instead of rtl/formal/mutations
 # Prints a table (property, method, depth, result, seconds) and "N passed, N failed".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -32,6 +36,8 @@ only=""
 only_mutant=""
 mutants=1
 list=0
+check_mutants=0
+mutations_file=""
 jobs=1
 while (($#)); do
   case "$1" in
@@ -42,6 +48,8 @@ while (($#)); do
     --mutant) only_mutant="$2"; shift ;;
     --no-mutants) mutants=0 ;;
     --list) list=1 ;;
+    --check-mutants) check_mutants=1 ;;
+    --mutations) mutations_file="$2"; shift ;;
     --jobs) jobs="$2"; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d'; exit 0 ;;
     *) echo "formal.sh: unknown option $1" >&2; exit 2 ;;
@@ -89,11 +97,33 @@ while IFS= read -r line; do
     depth) m_depth[$current]=$value ;;
     *) echo "formal.sh: mutations: unknown key '$key' in [$current]" >&2; exit 2 ;;
   esac
-done <"$formal_dir/mutations"
+done <"${mutations_file:-$formal_dir/mutations}"
 
 if ((list)); then
   printf 'proof %s\n' "${proof_names[@]}"
   printf 'mutant %s\n' "${mutant_names[@]}"
+  exit 0
+fi
+
+if ((check_mutants)); then
+  stale=0
+  for mut in "${mutant_names[@]}"; do
+    problem=""
+    if [ -z "${m_proof[$mut]:-}" ] || [ -z "${p_mode[${m_proof[$mut]}]:-}" ]; then
+      problem="names no proof of rtl/formal/proofs ('${m_proof[$mut]:-}')"
+    elif [ ! -f "$root/${m_file[$mut]:-}" ]; then
+      problem="its file '${m_file[$mut]:-}' does not exist"
+    else
+      count=$(grep -cF -- "${m_from[$mut]}" "$root/${m_file[$mut]}" || true)
+      [ "$count" = 1 ] || problem="its line is found $count times in ${m_file[$mut]}: ${m_from[$mut]}"
+    fi
+    if [ -n "$problem" ]; then
+      echo "mutant $mut: $problem"
+      stale=$((stale + 1))
+    fi
+  done
+  echo "${#mutant_names[@]} mutations, $stale stale"
+  ((stale == 0)) || exit 1
   exit 0
 fi
 
@@ -105,7 +135,7 @@ build_smt2() {
   [ -f "$rtl_dir/0_interp_pkg.sv" ] && files+=("$rtl_dir/0_interp_pkg.sv")
   for m in ${p_rtl[$name]}; do files+=("$rtl_dir/$m.sv"); done
   files+=("$formal_dir/$harness.sv")
-  script="read_verilog -formal -sv $defines ${files[*]}"$'\n'
+  script="read_verilog -formal -sv -I$rtl_dir $defines ${files[*]}"$'\n'
   if [ "${p_params[$name]}" != "-" ]; then
     local kv
     for kv in ${p_params[$name]//,/ }; do
@@ -197,7 +227,7 @@ check_mutant() {
   start=$(date +%s.%N)
   local out="$work/mutant_$mut" rtl_copy="$work/mutant_$mut.rtl"
   rm -rf "$rtl_copy"; mkdir -p "$rtl_copy"
-  cp "$root"/rtl/*.sv "$rtl_copy/"
+  cp "$root"/rtl/*.sv "$root"/rtl/*.svh "$rtl_copy/"
   local target="$rtl_copy/$(basename "${m_file[$mut]}")" text count
   text=$(<"$target")
   count=$(grep -cF -- "${m_from[$mut]}" "$target" || true)

@@ -5,9 +5,12 @@
 // previous one was taken and stays valid until frame_valid & frame_ready at an edge. Frames
 // come from a hex file ($readmemh). Stops at done, error or +max_cycles and prints the
 // cycle count and final position, which the benchmark checks against the golden model.
-// Plusargs: +frames=FILE +nframes=N +cpf=C +modulus=M +max_cycles=K
+// Plusargs: +frames=FILE +nframes=N +cpf=C +modulus=M +max_cycles=K; the arch is the
+// parameter BitSerial (iverilog -Pinterp_tb.BitSerial=0 for the parallel one).
 `timescale 1ns / 1ps
-module interp_tb;
+module interp_tb #(
+  parameter bit BitSerial = 1'b1
+);
   localparam int MaxFrames = 1 << 20;
 
   logic [7:0] frames [MaxFrames];
@@ -29,7 +32,7 @@ module interp_tb;
   assign frame       = frame_valid ? frames[next_frame] : 8'h00;
   assign tape_end    = next_frame >= nframes;
 
-  interp_top dut (
+  interp_top #(.BitSerial(BitSerial)) dut (
     .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]),
     .frame_i(frame), .frame_valid_i(frame_valid), .tape_end_i(tape_end),
     .frame_ready_o(frame_ready),

@@ -1,10 +1,11 @@
 // Simulation-speed benchmark of the interpolator engines (figures in docs/performance.md).
 //
 // What: plays one tape (default examples/gear.nc at 1 MHz with a 1000 cps reader, the CLI's
-// defaults) on each engine and reports simulated clock cycles per second:
+// defaults) in one arch (--arch, default serial) on each engine and reports simulated clock
+// cycles per second:
 //   golden            GoldenInterp + FrameSource (plain C++)
-//   rtl               verilated RTL (Vinterp_top) with a C++ harness
-//   rtl-trace-off     the --trace build (Vinterp_top_trace) with tracing off
+//   rtl               verilated RTL (the arch's model, rtl_models.h) with a C++ harness
+//   rtl-trace-off     the arch's --trace build with tracing off
 //   cosim             lock step: RTL + golden + every output compared every clock
 //   rtl-vcd           the --trace build writing a VCD of every signal, every clock
 //   icarus            the same RTL under Icarus Verilog (bench/sim/interp_tb.sv, $readmemh)
@@ -31,11 +32,11 @@
 #include <string>
 #include <vector>
 
-#include "Vinterp_top.h"
-#include "Vinterp_top_trace.h"
 #include "frame_source.h"
 #include "interp_top.h"
 #include "lockstep.h"
+#include "machine_options.h"
+#include "rtl_models.h"
 #include "tape.h"
 #include "verilated_interp.h"
 #include "verilated_vcd_c.h"
@@ -47,6 +48,7 @@ namespace fs = std::filesystem;
 
 struct Options {
   std::string tape = NCINTERP_DEFAULT_TAPE;
+  Arch arch = Arch::kSerial;
   double clock_hz = 1e6;
   double reader_cps = 1000;
   double seconds = 2.0;             // CPU time per in-process engine
@@ -172,7 +174,8 @@ Row measure_icarus(const Options& o, const std::vector<uint8_t>& frames, uint64_
     }
   }
   std::string log;
-  const std::string compile = "iverilog -g2012 -o " + vvp.string() + " " + o.rtl_sources + " " +
+  const std::string compile = "iverilog -g2012 -Pinterp_tb.BitSerial=" +
+                              std::string(cfg.serial() ? "1" : "0") + " -I" + NCINTERP_RTL_DIR + " -o " + vvp.string() + " " + o.rtl_sources + " " +
                               o.tb + " 2>&1";
   if (run_command(compile, &log) != 0) throw std::runtime_error("iverilog failed:\n" + log);
   std::ostringstream cmd;
@@ -204,7 +207,8 @@ Row measure_system(const Options& o, const std::string& engine, const EndState& 
   Row row{"system-" + engine};
   const fs::path report = work / ("play_" + engine + ".json");
   std::ostringstream cmd;
-  cmd << o.ncinterp << " play " << o.tape << " --engine " << engine << " --clock-hz " << o.clock_hz
+  cmd << o.ncinterp << " play " << o.tape << " --engine " << engine << " --arch "
+      << arch_name(o.arch) << " --clock-hz " << o.clock_hz
       << " --reader-cps " << o.reader_cps << " --report " << report.string() << " 2>&1";
   std::string out;
   const double c0 = children_cpu();
@@ -224,6 +228,7 @@ Row measure_system(const Options& o, const std::string& engine, const EndState& 
 int run(const Options& o) {
   const std::vector<uint8_t> frames = tape::load_frames(o.tape);
   InterpConfig cfg;
+  cfg.arch = o.arch;
   cfg.feed_modulus = InterpConfig::feed_modulus_for(o.clock_hz, cfg.feed_frac_digits);
   const uint64_t cpf = FrameSource::cycles_per_frame_for(o.clock_hz, o.reader_cps);
   const uint64_t limit = 50'000'000'000ull;
@@ -246,13 +251,17 @@ int run(const Options& o) {
     }));
   if (o.wants("rtl"))
     rows.push_back(measure("rtl", o.seconds, want, [&] {
-      VerilatedInterp<Vinterp_top> rtl(cfg);
-      return play_rtl(rtl, frames, cpf, limit);
+      return with_rtl_model(cfg.arch, [&](auto model) {
+        VerilatedInterp<typename decltype(model)::type> rtl(cfg, rtl_built_config(cfg.arch));
+        return play_rtl(rtl, frames, cpf, limit);
+      });
     }));
   if (o.wants("rtl-trace-off"))
     rows.push_back(measure("rtl-trace-off", o.seconds, want, [&] {
-      VerilatedInterp<Vinterp_top_trace> rtl(cfg);
-      return play_rtl(rtl, frames, cpf, limit);
+      return with_rtl_trace_model(cfg.arch, [&](auto model) {
+        VerilatedInterp<typename decltype(model)::type> rtl(cfg, rtl_built_config(cfg.arch));
+        return play_rtl(rtl, frames, cpf, limit);
+      });
     }));
   cosim::Options co;
   co.config = cfg;
@@ -271,15 +280,17 @@ int run(const Options& o) {
     const EndState part = play(g, frames, cpf, o.vcd_cycles);
     const fs::path vcd_path = work / "bench.vcd";
     Row row = measure("rtl-vcd", 0.0, part, [&] {
-      VerilatedInterp<Vinterp_top_trace> rtl(cfg);
-      rtl.context().traceEverOn(true);
-      VerilatedVcdC vcd;
-      rtl.model().trace(&vcd, 99);
-      vcd.open(vcd_path.string().c_str());
-      const EndState e = play_rtl(rtl, frames, cpf, o.vcd_cycles, &vcd,
-                                  static_cast<uint64_t>(1e12 / o.clock_hz));
-      vcd.close();
-      return e;
+      return with_rtl_trace_model(cfg.arch, [&](auto model) {
+        VerilatedInterp<typename decltype(model)::type> rtl(cfg, rtl_built_config(cfg.arch));
+        rtl.context().traceEverOn(true);
+        VerilatedVcdC vcd;
+        rtl.model().trace(&vcd, 99);
+        vcd.open(vcd_path.string().c_str());
+        const EndState e = play_rtl(rtl, frames, cpf, o.vcd_cycles, &vcd,
+                                    static_cast<uint64_t>(1e12 / o.clock_hz));
+        vcd.close();
+        return e;
+      });
     });
     std::ostringstream note;
     note << "all signals; " << fs::file_size(vcd_path) / row.cycles << " bytes/cycle";
@@ -296,8 +307,9 @@ int run(const Options& o) {
     }
   }
 
-  std::printf("tape %s: %zu frames, %llu cycles per run at %g Hz, reader %g cps (%llu cycles/frame)\n\n",
-              o.tape.c_str(), frames.size(), static_cast<unsigned long long>(want.cycles),
+  std::printf("tape %s, %s arch: %zu frames, %llu cycles per run at %g Hz, reader %g cps (%llu "
+              "cycles/frame)\n\n",
+              o.tape.c_str(), arch_name(o.arch), frames.size(), static_cast<unsigned long long>(want.cycles),
               o.clock_hz, o.reader_cps, static_cast<unsigned long long>(cpf));
   // The rate as a ratio to the golden model's of the same run: the machine's speed cancels.
   const auto cpu_rate = [](const Row& r) { return r.cpu_s > 0 ? r.cycles / r.cpu_s / 1e6 : 0.0; };
@@ -331,6 +343,7 @@ int main(int argc, char** argv) {
   ncinterp::bench::Options o;
   CLI::App app{"Simulation speed of the interpolator engines (docs/performance.md)"};
   app.add_option("--tape", o.tape, "tape to play")->capture_default_str();
+  ncinterp::cli::add_arch_option(&app, o.arch);
   app.add_option("--clock-hz", o.clock_hz, "interpolator clock, Hz")->capture_default_str();
   app.add_option("--reader-cps", o.reader_cps, "tape reader, characters per second")->capture_default_str();
   app.add_option("--seconds", o.seconds, "CPU seconds per in-process engine")->capture_default_str();

@@ -26,7 +26,8 @@ module interp_top_props #(
   parameter int MW = 3,   // ModulusWidth
   parameter int PW = 4,   // PosWidth
   parameter int NW = 2,   // SeqWidth
-  parameter int OW = 5    // OffsetWidth
+  parameter int OW = 5,   // OffsetWidth
+  parameter bit BS = 1'b0 // BitSerial: 1 the serial arch (the boards'), 0 the parallel one
 ) (
   input logic          clk_i,
   input logic          rst_ni,
@@ -44,7 +45,7 @@ module interp_top_props #(
 
   interp_top #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .PosWidth(PW),
-    .SeqWidth(NW), .OffsetWidth(OW), .ModulusWidth(MW)
+    .SeqWidth(NW), .OffsetWidth(OW), .ModulusWidth(MW), .BitSerial(BS)
   ) u_dut (
     .clk_i, .rst_ni, .feed_modulus_i, .frame_i, .frame_valid_i, .tape_end_i,
     .frame_ready_o(frame_ready), .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y),

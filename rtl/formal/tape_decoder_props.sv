@@ -47,32 +47,26 @@ module tape_decoder_props #(
   localparam int KDigit = BitSerial ? NumWidth + 1 : 0;
   localparam int KLine = W + 4 > KDigit ? W + 4 : KDigit;
   localparam int LowWidth = $clog2(K + 2);
-  localparam int BW = NW + 2 + 2 * (W + 1) + 2 * W + SW + 1 + KWidth + 2;
+  // The decoded block (rtl/block_record.svh), with the names of the widths it reads.
+  localparam int IncWidth = W, SeqWidth = NW, StepWidth = SW;
+`include "block_record.svh"
 
-  logic              frame_ready, blk_valid, dx_neg, dy_neg, grow_x, grow_y, step_over;
+  logic              frame_ready, blk_valid;
   logic              end_blk, tape_ended, err;
-  logic [NW-1:0]     n, err_block;
-  logic [1:0]        motion;
-  logic [W-1:0]      dx, dy, i, j;
-  logic [SW-1:0]     step;
-  logic [KWidth-1:0] k;
+  logic [NW-1:0]     err_block;
   logic [3:0]        err_code;
   logic [OW-1:0]     err_offset;
+  block_t            block;
 
   tape_decoder #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .SeqWidth(NW),
     .OffsetWidth(OW), .BitSerial(BitSerial)
   ) u_dut (
     .clk_i, .rst_ni, .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o(frame_ready),
-    .blk_valid_o(blk_valid), .blk_ready_i, .blk_n_o(n), .blk_motion_o(motion),
-    .blk_dx_o(dx), .blk_dx_neg_o(dx_neg), .blk_dy_o(dy), .blk_dy_neg_o(dy_neg),
-    .blk_i_o(i), .blk_j_o(j), .blk_step_o(step), .blk_step_over_o(step_over), .blk_k_o(k),
-    .blk_grow_x_o(grow_x), .blk_grow_y_o(grow_y), .end_o(end_blk), .tape_ended_o(tape_ended), .err_o(err),
+    .blk_valid_o(blk_valid), .blk_ready_i, .blk_o(block),
+    .end_o(end_blk), .tape_ended_o(tape_ended), .err_o(err),
     .err_code_o(err_code), .err_block_o(err_block), .err_offset_o(err_offset)
   );
-
-  logic [BW-1:0] block;
-  assign block = {n, motion, dx_neg, dx, dy_neg, dy, i, j, step, step_over, k, grow_x, grow_y};
 
   // Model: clocks frame_ready has been low (saturating), the same while the modal motion
   // is G01, the tape end seen.
@@ -85,7 +79,7 @@ module tape_decoder_props #(
     f_tape_end_q <= tape_end_i && rst_ni;
     if (!rst_ni || frame_ready || err || blk_valid) f_low_q <= '0;
     else if (f_low_q != '1) f_low_q <= f_low_q + 1'b1;
-    if (!rst_ni || frame_ready || err || blk_valid || motion != interp_pkg::MotionLine)
+    if (!rst_ni || frame_ready || err || blk_valid || block.motion != interp_pkg::MotionLine)
       f_low_line_q <= '0;
     else if (f_low_line_q != '1) f_low_line_q <= f_low_line_q + 1'b1;
   end

@@ -18,7 +18,9 @@ module interp_ice40_top #(
   // The board's clock (the iCEstick has a 12 MHz oscillator).
   parameter longint ClockHz    = 12_000_000,
   // The per-block arithmetic bit-serial, as on the board (rtl/board/board_core.sv).
-  parameter bit BitSerial   = 1'b1
+  parameter bit BitSerial   = 1'b1,
+  // Circle mode built in (interp_top's CircleMode).
+  parameter bit CircleMode  = 1'b1
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -53,7 +55,7 @@ module interp_ice40_top #(
   interp_top #(
     .IncWidth(IncWidth), .FeedWidth(FeedWidth), .FeedFracDigits(FeedFracDigits),
     .PosWidth(16), .SeqWidth(SeqWidth), .OffsetWidth(16), .ModulusWidth(ModulusWidth),
-    .BitSerial(BitSerial)
+    .BitSerial(BitSerial), .CircleMode(CircleMode)
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(ModulusWidth'(FeedModulus)),

@@ -68,6 +68,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["tape"] = ctx.tape_file;
   j["contour"] = ctx.contour_file.empty() ? json(nullptr) : json(ctx.contour_file);
   j["engine"] = engine_name(ctx.setup.engine);
+  j["arch"] = arch_name(ctx.setup.arch);
   j["clock_hz"] = ctx.setup.clock_hz;
   j["reader_cps"] = ctx.setup.reader_cps;
   j["blu_mm"] = o.blu_mm;
@@ -159,7 +160,8 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
            ", at (" + fmt("%.3f", x) + ", " + fmt("%.3f", y) + ") mm";
   };
   s << ctx.tape_file << ": " << c.blocks().size() << " blocks, " << c.pulse_count() << " pulse clocks, "
-    << c.cycles() << " clocks on the " << engine_name(ctx.setup.engine) << " engine\n";
+    << c.cycles() << " clocks on the " << engine_name(ctx.setup.engine) << " engine ("
+    << arch_name(ctx.setup.arch) << ")\n";
   const ErrorStat& p = c.path_error();
   s << "  interpolator error (to the programmed blocks): max " << fmt("%.4f", p.max * o.blu_mm)
     << " mm (" << fmt("%.3f", p.max) << " BLU), rms " << fmt("%.4f", p.rms() * o.blu_mm) << " mm";

@@ -11,7 +11,7 @@
 #include "line_schedule.h"
 
 #ifdef NCINTERP_CHECKER_HAS_RTL
-#include "Vinterp_top.h"
+#include "rtl_models.h"
 #include "verilated_interp.h"
 #endif
 
@@ -28,14 +28,14 @@ uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
     const uint64_t big = static_cast<uint64_t>(std::max({std::llabs(b.tape.dx), std::llabs(b.tape.dy),
                                                          std::llabs(b.tape.i), std::llabs(b.tape.j)}));
     const LineSchedule s(big, 0, b.tape.feed, cfg.feed_modulus);
-    const uint64_t iteration = cfg.bit_serial ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
+    const uint64_t iteration = cfg.serial() ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
     uint64_t duration = s.duration();
     if (b.is_rapid())  // at the slowest rapid rate: 60 f_clk len / v = M len / (v 10^FeedFracDigits)
       duration = static_cast<uint64_t>(static_cast<double>(cfg.feed_modulus) * b.length() *
                                        std::pow(10.0, -double(cfg.frac_digits) - double(cfg.feed_frac_digits)) /
                                        tape::kSlowestRapidMmMin);
     total += std::max(duration, 4 * s.iterations() * iteration + 4) + 4;
-    if (b.is_arc()) total += ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, 4 * s.iterations());
+    if (b.is_arc()) total += ArcPrepare::clocks(cfg.inc_width, cfg.serial(), 4 * s.iterations());
   }
   return total + total / 8;
 }
@@ -53,7 +53,9 @@ bool rtl_available() {
 double blu_of(const tape::Format& format) { return std::pow(10.0, -static_cast<double>(format.frac_digits)); }
 
 void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, firststage::GridPoint start) {
+  const bool circle_mode = s.format.circle_mode;  // the machine's, not the tape's
   s.format = firststage::tape_format(o);
+  s.format.circle_mode = circle_mode;
   s.tol_mm = o.tol_mm;
   s.start_mm = firststage::Vec2{start.x * o.blu_mm, start.y * o.blu_mm};
   s.cutter_radius_mm = o.cutter_radius_mm;
@@ -90,7 +92,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
 
   InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
   cfg.pos_width = setup.pos_width;
-  cfg.bit_serial = setup.bit_serial;
+  cfg.arch = setup.arch;
   if (contour) {
     ReferenceOptions ro;
     ro.blu_mm = out.blu_mm;
@@ -130,8 +132,10 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
                                 : run_engine_jumping(dut, source, budget, checker, observe);
   } else {
 #ifdef NCINTERP_CHECKER_HAS_RTL
-    VerilatedInterp<Vinterp_top> dut(cfg);
-    out.run = run_engine(dut, source, budget, observe);
+    out.run = with_rtl_model(cfg.arch, [&](auto model) {
+      VerilatedInterp<typename decltype(model)::type> dut(cfg, rtl_built_config(cfg.arch));
+      return run_engine(dut, source, budget, observe);
+    });
 #endif
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -28,7 +28,7 @@ struct CheckSetup {
   double clock_hz = 1e6;
   double reader_cps = 1000.0;      // tape reader, characters per second
   unsigned pos_width = 32;         // the position counters' width (InterpConfig::pos_width)
-  bool bit_serial = false;         // the board's bit-serial dry run and digits (golden engine only)
+  Arch arch = Arch::kSerial;       // the microarchitecture both engines play
   EngineKind engine = EngineKind::kGolden;
   double tol_mm = 0.01;            // delta: the total error's bound
   // Absolute grid point of the tape start (mm); unset: the contour's start on the grid

@@ -1,110 +1,20 @@
-// Lock-step cosimulation loop (see lockstep.h).
+// Lock-step cosimulation on this build's verilated model of the configured arch (see
+// lockstep.h; the loop is lockstep_loop.h).
 #include "lockstep.h"
 
-#include <sstream>
-
-#include "Vinterp_top.h"
-#include "frame_source.h"
+#include "lockstep_loop.h"
+#include "rtl_models.h"
 #include "verilated_interp.h"
 
 namespace ncinterp::cosim {
 
-namespace {
-
-constexpr uint64_t kProgressMask = (uint64_t{1} << 24) - 1;
-
-// First differing output, in port order; expected = golden, actual = RTL.
-Mismatch first_difference(const InterpOutputs& g, const InterpOutputs& r) {
-  struct Field {
-    const char* name;
-    int64_t (*get)(const InterpOutputs&);
-  };
-  static const Field fields[] = {
-#define INTERP_OUTPUT(name, kind, width) \
-  {#name "_o", [](const InterpOutputs& o) -> int64_t { return o.name; }},
-#include "interp_outputs.def"
-#undef INTERP_OUTPUT
-  };
-  for (const Field& f : fields) {
-    if (f.get(g) != f.get(r)) {
-      Mismatch m;
-      m.signal = f.name;
-      m.expected = f.get(g);
-      m.actual = f.get(r);
-      return m;
-    }
-  }
-  return Mismatch{};  // not reached when g != r
-}
-
-}  // namespace
-
 Result run_lockstep(const std::vector<uint8_t>& frames, const Options& options,
                     const Observer& observer) {
-  GoldenInterp golden(options.config);
-  VerilatedInterp<Vinterp_top> rtl(options.config);
-  if (options.fault.kind != GoldenInterp::Fault::kNone) golden.inject(options.fault);
-  FrameSource golden_source(frames, options.cycles_per_frame);
-  FrameSource rtl_source(frames, options.cycles_per_frame);
-
-  Result result;
-  Stats& stats = result.stats;
-  uint64_t cycle = 0, idle_run = 0, loads = 0;
-  auto compare = [&]() {
-    if (rtl.same_as(golden.outputs())) return true;
-    Mismatch m = first_difference(golden.outputs(), rtl.outputs());
-    m.cycle = cycle;
-    m.block = golden.outputs().block_n;
-    m.cycles_matched = cycle == 0 ? 0 : cycle - 1;
-    result.mismatch = m;
-    result.end = Result::End::kMismatch;
-    return false;
-  };
-  if (observer) observer(0, golden.outputs());
-  if (compare()) {
-    for (;;) {
-      const InterpOutputs& g = golden.outputs();
-      if (g.done || g.error) {
-        result.end = g.done ? Result::End::kDone : Result::End::kTapeError;
-        break;
-      }
-      if (cycle >= options.max_cycles) {
-        result.end = Result::End::kCycleLimit;
-        break;
-      }
-      const bool golden_ready = g.frame_ready, rtl_ready = rtl.frame_ready();
-      golden.tick(golden_source.inputs());
-      rtl.tick(rtl_source.inputs());
-      golden_source.clock(golden_ready);
-      rtl_source.clock(rtl_ready);
-      ++cycle;
-      // Statistics from the golden outputs (equal to the RTL's unless reported below).
-      const InterpOutputs& o = golden.outputs();
-      if (o.step_x) ++stats.pulses[0][o.dir_x ? 1 : 0];
-      if (o.step_y) ++stats.pulses[1][o.dir_y ? 1 : 0];
-      if (golden.blocks_loaded() != loads) {
-        if (loads > 0) stats.gap_cycles += idle_run;
-        loads = golden.blocks_loaded();
-        if (o.feed_saturated) ++stats.saturated_blocks;
-      }
-      idle_run = o.busy ? 0 : idle_run + 1;
-      if (observer) observer(cycle, o);
-      if ((cycle & kProgressMask) == 0 && options.progress) options.progress(cycle);
-      if (!compare()) break;
-    }
-  }
-  stats.blocks = loads;
-  result.cycles = cycle;
-  result.last = golden.outputs();
-  return result;
-}
-
-std::string describe(const Mismatch& m) {
-  std::ostringstream s;
-  s << "cycle " << m.cycle << ", block N" << m.block << ", signal " << m.signal
-    << ": expected " << m.expected << ", actual " << m.actual << " (" << m.cycles_matched
-    << " cycles matched)";
-  return s.str();
+  const Arch arch = options.config.arch;
+  return with_rtl_model(arch, [&](auto model) {
+    VerilatedInterp<typename decltype(model)::type> rtl(options.config, rtl_built_config(arch));
+    return run_lockstep_on(rtl, frames, options, observer);
+  });
 }
 
 }  // namespace ncinterp::cosim

@@ -17,7 +17,7 @@
 namespace ncinterp::cosim {
 
 struct Options {
-  InterpConfig config;                 // default widths (the RTL's) + feed_modulus
+  InterpConfig config;                 // default widths (the RTL's), arch + feed_modulus
   uint64_t cycles_per_frame = 1000;    // reader speed (FrameSource::cycles_per_frame_for)
   uint64_t max_cycles = 1'000'000'000;  // a run that does not end by then is stopped
   GoldenInterp::Fault fault;           // test hook: a fault injected into the golden model
@@ -57,6 +57,10 @@ using Observer = std::function<void(uint64_t cycle, const InterpOutputs& golden)
 // the golden outputs after reset (cycle 0) and after every clock.
 Result run_lockstep(const std::vector<uint8_t>& frames, const Options& options,
                     const Observer& observer = nullptr);
+
+// The first output that differs, in port order (expected = golden, actual = RTL); its
+// cycle, block and cycles_matched are left for the caller.
+Mismatch first_difference(const InterpOutputs& golden, const InterpOutputs& rtl);
 
 // One line: "cycle C, block N, signal S: expected E, actual A (K cycles matched)".
 std::string describe(const Mismatch& m);

@@ -1,6 +1,6 @@
 // VCD of the RTL over a window of clocks, written with Verilator's own tracer.
 // Idea: the RTL with its own FrameSource is deterministic, so re-running the trace-enabled
-// model (Vinterp_top_trace) from reset reproduces exactly the clocks of a lock-step run;
+// model of the configured arch (rtl_models.h) from reset reproduces exactly the clocks of a lock-step run;
 // only the window [first_cycle, last_cycle] is dumped, so a mismatch found after a billion
 // clocks still gives a small file. Scopes and time base as the system model's VCDs
 // (docs/waves.md): SystemC.interp.interp_top.<instance>.<signal>, 1 ps, edge c at

@@ -1,12 +1,17 @@
 // The verilated RTL (rtl/interp_top.sv) behind the golden model's interface: reset(),
-// tick(inputs), outputs(). Model is Vinterp_top (fast) or Vinterp_top_trace (VCD).
+// tick(inputs), outputs(). Model is one of rtl_models.h (an arch, fast or with VCD tracing)
+// or a sweep or soak variant's Vinterp_top.
 // Idea: one clock = set the inputs, evaluate with clk low, then with clk high (the rising
 // edge); every output is a register, so after the second eval the ports hold the outputs
 // of that edge, which is what GoldenInterp::outputs() holds after tick().
+// The RTL's assertions (verilated with --assert) print their message when one fails; the
+// harness then throws std::runtime_error from that clock instead of letting Verilator
+// abort the process, so a command reports the failure and exits like on any other error.
 #pragma once
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "interp_ports.h"
 #include "verilated.h"
@@ -23,26 +28,28 @@ class VerilatedInterp {
   // PortPosition::from_rtl sign-extends from the port's C type (IData).
   static_assert(InterpConfig{}.pos_width == 32, "PosWidth must match the verilated C type");
 
-  // The RTL is verilated with its default parameters: cfg must have them (only
-  // feed_modulus, an input port, is free). A width variant (sw/tools/sweep/rtl_variant/: the
-  // model verilated with -GIncWidth=W) is compiled with NCINTERP_RTL_INC_WIDTH=W, one with
-  // the bit-serial decoder (-GBitSerial=1'b1) with NCINTERP_RTL_BIT_SERIAL.
-  explicit VerilatedInterp(const InterpConfig& cfg)
+  // `built`: the parameters the model was verilated with (rtl_built_config(arch) for the
+  // models of this build, rtl_models.h; a sweep or soak variant's own, rtl_variant/). cfg
+  // must have them: only feed_modulus, an input port, is free.
+  VerilatedInterp(const InterpConfig& cfg, const InterpConfig& built)
       : context_(std::make_unique<VerilatedContext>()),
         model_(std::make_unique<Model>(context_.get(), kScope)),
         modulus_(cfg.feed_modulus) {
-    InterpConfig rtl;
-#ifdef NCINTERP_RTL_INC_WIDTH
-    rtl.inc_width = NCINTERP_RTL_INC_WIDTH;
-#endif
-#ifdef NCINTERP_RTL_BIT_SERIAL
-    rtl.bit_serial = true;
-#endif
-    if (!cfg.same_parameters(rtl))
+    if (!cfg.same_parameters(built))
       throw std::invalid_argument(
-          "the verilated RTL is built with the default parameters; the configuration differs");
+          std::string("the verilated RTL (") + arch_name(built.arch) + ", W " +
+          std::to_string(built.inc_width) + ") is built with other parameters than the configuration's");
+    // A failed assertion stops the model ($stop) on the thread's context: this one.
+    context_->fatalOnError(false);
+    Verilated::threadContextp(context_.get());
     reset();
   }
+  ~VerilatedInterp() {
+    if (Verilated::threadContextp() == context_.get())
+      Verilated::threadContextp(Verilated::defaultContextp());
+  }
+  VerilatedInterp(const VerilatedInterp&) = delete;
+  VerilatedInterp& operator=(const VerilatedInterp&) = delete;
 
   // One edge with rst_ni low (synchronous reset); dump as for tick().
   template <class Dump>
@@ -111,6 +118,8 @@ class VerilatedInterp {
     m.clk_i = 1;
     m.eval();
     dump(1);
+    if (context_->gotError())
+      throw std::runtime_error("the RTL stopped on a failed assertion (its message is above)");
   }
 
   std::unique_ptr<VerilatedContext> context_;

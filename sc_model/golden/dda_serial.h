@@ -40,7 +40,7 @@ class SerialDda {
   }
   // The player's DDA's lead: SerialDda's with BitSerial, 0 for CircleDda (one clock).
   static unsigned player_lead_bits(const InterpConfig& cfg) {
-    return cfg.bit_serial ? lead_bits(cfg.inc_width) : 0;
+    return cfg.serial() ? lead_bits(cfg.inc_width) : 0;
   }
 
   // A load edge of an arc / a line (as CircleDda::load, load_line).

@@ -1,7 +1,15 @@
 // Between the tape format and the interpolator's configuration (see interp_ports.h).
 #include "interp_ports.h"
 
+#include <stdexcept>
+
 namespace ncinterp {
+
+Arch parse_arch(const std::string& name) {
+  if (name == "serial") return Arch::kSerial;
+  if (name == "parallel") return Arch::kParallel;
+  throw std::invalid_argument("unknown arch '" + name + "' (serial or parallel)");
+}
 
 InterpConfig interp_config(double clock_hz, const tape::Format& format) {
   InterpConfig cfg;
@@ -10,6 +18,7 @@ InterpConfig interp_config(double clock_hz, const tape::Format& format) {
   cfg.feed_frac_digits = format.feed_frac_digits;
   cfg.feed_width = format.feed_width;
   cfg.seq_width = format.seq_width;
+  cfg.circle_mode = format.circle_mode;
   cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
   return cfg;
 }
@@ -21,6 +30,7 @@ tape::Format tape_format_of(const InterpConfig& cfg) {
   f.inc_width = cfg.inc_width;
   f.feed_width = cfg.feed_width;
   f.seq_width = cfg.seq_width;
+  f.circle_mode = cfg.circle_mode;
   return f;
 }
 

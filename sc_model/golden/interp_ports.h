@@ -8,12 +8,24 @@
 // explains each field.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <type_traits>
 
 #include "tape.h"
 #include "tape_errors.h"
 
 namespace ncinterp {
+
+// The microarchitecture (interp_top's BitSerial): the same ports, blocks and pulses, two
+// ways of computing them. kSerial is what the boards ship and every command's default: the
+// DDA of the player and of the arc's dry run bit-serial (SerialDda, 2P clocks per
+// iteration), x10 + d bit-serial, the block buffer in block RAM (a block can load only once
+// the RAM's read shows it: GoldenInterp::next_readable()). kParallel: one DDA iteration per
+// clock (CircleDda), the block buffer in flip-flops.
+enum class Arch { kSerial, kParallel };
+inline const char* arch_name(Arch arch) { return arch == Arch::kSerial ? "serial" : "parallel"; }
+// "serial" or "parallel"; throws std::invalid_argument naming the choices otherwise.
+Arch parse_arch(const std::string& name);
 
 // Elaboration parameters (RTL parameters of the same name) plus the static configuration
 // input feed_modulus_i, which depends on the clock frequency.
@@ -26,10 +38,10 @@ struct InterpConfig {
   unsigned seq_width = 20;        // SeqWidth
   unsigned offset_width = 32;     // OffsetWidth
   unsigned modulus_width = 48;    // ModulusWidth
-  // BitSerial: the DDA of the player and of the arc's dry run (SerialDda, 2P clocks per
-  // iteration) and x10 + d bit-serial, the block buffer in block RAM (a block can load only
-  // once the RAM's read shows it: GoldenInterp::next_readable()).
-  bool bit_serial = false;
+  Arch arch = Arch::kSerial;      // BitSerial (1 = kSerial)
+  // CircleMode: G02/G03 played; without, the lines-only interpolator (an arc's G word is
+  // refused, TapeError::kNoCircleMode).
+  bool circle_mode = true;
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
 
@@ -40,8 +52,10 @@ struct InterpConfig {
            feed_width == o.feed_width && feed_frac_digits == o.feed_frac_digits &&
            pos_width == o.pos_width && seq_width == o.seq_width &&
            offset_width == o.offset_width && modulus_width == o.modulus_width &&
-           bit_serial == o.bit_serial;
+           arch == o.arch && circle_mode == o.circle_mode;
   }
+
+  bool serial() const { return arch == Arch::kSerial; }
 
   static uint64_t feed_modulus_for(double clock_hz, unsigned feed_frac_digits) {
     uint64_t scale = 1;

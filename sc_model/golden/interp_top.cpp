@@ -97,19 +97,19 @@ void GoldenInterp::load_block() {
   if (b.is_arc()) {
     // The decoder has checked the arc; the geometry gives the circle DDA's start.
     const ArcGeometry g = arc_geometry(b.arc_words(), cfg_.inc_width);
-    if (cfg_.bit_serial)
+    if (cfg_.serial())
       serial_.load(g, !b.dx_neg, !b.dy_neg);
     else
       circle_.load(g, !b.dx_neg, !b.dy_neg);
   } else {
     // k = bit length of max(|dx|, |dy|); the RTL's decoder computes the same at the LF.
     const unsigned k = bit_length(b.dx | b.dy);
-    if (cfg_.bit_serial)
+    if (cfg_.serial())
       serial_.load_line(k, b.dx, b.dy, !b.dx_neg, !b.dy_neg);
     else
       circle_.load_line(k, b.dx, b.dy, !b.dx_neg, !b.dy_neg);
   }
-  player_done_ = cfg_.bit_serial ? serial_.done() : circle_.done();
+  player_done_ = cfg_.serial() ? serial_.done() : circle_.done();
   player_running_ = false;
   dir_[0] = !b.dx_neg;
   dir_[1] = !b.dy_neg;

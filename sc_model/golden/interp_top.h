@@ -74,7 +74,7 @@ class GoldenInterp {
   uint64_t pos_mask_, pos_sign_;
 
   GoldenTapeDecoder decoder_;
-  // Block buffer ("next" register). With bit_serial it is a block RAM whose registered read
+  // Block buffer ("next" register). In the serial arch it is a block RAM whose registered read
   // shows the last block taken, or the playing block's slot while the player reads that
   // block's words (SerialDda::words()): a block is readable (next_readable()) when the
   // player holds no words and the read register has had a clock to fetch it, after the
@@ -84,11 +84,11 @@ class GoldenInterp {
   bool next_valid_ = false;
   uint64_t next_taken_cycle_ = 0, words_end_cycle_ = 0;
   bool next_readable() const {
-    return !cfg_.bit_serial || (!serial_.words() && cycle_ != next_taken_cycle_ + 1 &&
+    return !cfg_.serial() || (!serial_.words() && cycle_ != next_taken_cycle_ + 1 &&
                                 cycle_ != words_end_cycle_ + 1);
   }
   // Player: feed generator and the DDA (lines and arcs). The feed generator's lead
-  // (bit_serial: the serial DDA's iteration takes 2^lead_bits_ clocks): the phase starts
+  // (serial arch: the serial DDA's iteration takes 2^lead_bits_ clocks): the phase starts
   // at S << lead_bits_, and a block is saturated from S >= saturation_step_ (S << lead_bits_
   // >= M).
   unsigned lead_bits_ = 0;
@@ -97,14 +97,14 @@ class GoldenInterp {
   uint64_t phase_ = 0;
   bool saturated_ = false;
   bool dir_[2] = {false, false};
-  // The player's DDA: CircleDda, or with bit_serial SerialDda. player_done_ and
+  // The player's DDA: CircleDda, or in the serial arch SerialDda. player_done_ and
   // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
   // here so that a clock without an iteration reads two flags (asking the DDAs instead,
-  // behind a bit_serial branch, made sim_bench's golden row 13 % slower).
+  // behind an arch branch, made sim_bench's golden row 13 % slower).
   CircleDda circle_;
   SerialDda serial_;
   bool player_done_ = true, player_running_ = false;
-  CircleDda& player_dda() { return cfg_.bit_serial ? serial_.dda() : circle_; }
+  CircleDda& player_dda() { return cfg_.serial() ? serial_.dda() : circle_; }
   // Outputs: the output registers themselves.
   InterpOutputs out_;
 
@@ -156,7 +156,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
 // first pass.
 inline void GoldenInterp::player_edge(bool strobe) {
   CircleDda::Steps s;
-  if (cfg_.bit_serial) {
+  if (cfg_.serial()) {
     const bool words = serial_.words();
     const SerialDda::Edge e = serial_.edge(strobe);
     s = {e.x, e.y};

@@ -16,7 +16,8 @@ bool odd_parity(uint8_t frame) { return __builtin_parity(frame) != 0; }
 }  // namespace
 
 GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
-    : bit_serial_(cfg.bit_serial),
+    : bit_serial_(cfg.serial()),
+      circle_mode_(cfg.circle_mode),
       num_width_(std::max({cfg.inc_width, cfg.feed_width, cfg.seq_width, 7u})),
       frac_digits_(cfg.frac_digits),
       feed_frac_digits_(cfg.feed_frac_digits),
@@ -25,7 +26,7 @@ GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
       seq_limit_(low_mask(cfg.seq_width)),
       offset_mask_(static_cast<uint32_t>(low_mask(cfg.offset_width))),
       step_mask_(step_mask(cfg)),
-      arc_(cfg.inc_width, cfg.bit_serial) {}
+      arc_(cfg.inc_width, cfg.serial()) {}
 
 uint64_t GoldenTapeDecoder::step_mask(const InterpConfig& cfg) {
   const unsigned exact = cfg.feed_width + cfg.inc_width + 1;
@@ -248,16 +249,21 @@ bool GoldenTapeDecoder::commit_word(Word w) {
   switch (w) {
     case Word::kN: block_.n = value32; break;
     case Word::kG:
-      if (num_ >= 1 && num_ <= 3) {
-        block_.motion = static_cast<uint8_t>(num_);  // G01, G02, G03
+      if (tape::is_motion(num_)) {
+        block_.motion = static_cast<uint8_t>(num_);  // the G number is the motion code
+        // Without circle mode an arc's G word is refused where it stands.
+        if (!circle_mode_ && block_.is_arc()) {
+          fail(TapeError::kNoCircleMode, word_offset_);
+          return false;
+        }
         motion_block_ = true;
-      } else if (!(num_ == 17 || num_ == 21 || num_ == 91 || num_ == 93)) {
+      } else if (tape::code_kind('G', num_) != tape::CodeKind::kSetting) {
         fail(TapeError::kUnsupportedCode, word_offset_);
         return false;
       }
       break;
     case Word::kM:
-      if (num_ != 2 && num_ != 30) {
+      if (tape::code_kind('M', num_) != tape::CodeKind::kEnd) {
         fail(TapeError::kUnsupportedCode, word_offset_);
         return false;
       }

@@ -98,7 +98,9 @@ class GoldenTapeDecoder {
 
   // Parameters. bit_serial_: a digit's x10 + d is a pass of num_width_ clocks (the RTL's
   // BitSerial; num_width_ is its NumWidth, the widest word register, at least 7 bits).
+  // circle_mode_: G02/G03 are played (else refused: the RTL's CircleMode).
   bool bit_serial_;
+  bool circle_mode_;
   unsigned num_width_;
   unsigned frac_digits_, feed_frac_digits_;
   uint64_t inc_limit_, feed_limit_, seq_limit_;

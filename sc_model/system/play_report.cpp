@@ -32,6 +32,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   nlohmann::json j;
   j["tape"] = tape_path;
   j["engine"] = engine_name;
+  j["arch"] = arch_name(r.config.arch);
   j["status"] = r.ok() ? "ok" : "error";
   j["blocks"] = s.blocks_played;
   j["blocks_on_tape"] = r.blocks_on_tape;

@@ -38,7 +38,7 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     unsigned k = 0;
     while (k < 62 && (m >> k) != 0) ++k;
     const uint64_t iterations = arc ? 2ull << k : 1ull << k;
-    const uint64_t prepare = arc ? ArcPrepare::clocks(cfg.inc_width, cfg.bit_serial, iterations) : 0;
+    const uint64_t prepare = arc ? ArcPrepare::clocks(cfg.inc_width, cfg.serial(), iterations) : 0;
     uint64_t programmed = b.feed ? (cfg.feed_modulus + b.feed - 1) / b.feed : 0;
     if (tape::is_rapid(b.motion))  // 60 f_clk len / feed = M len / (feed 10^FeedFracDigits)
       programmed = static_cast<uint64_t>(
@@ -46,7 +46,7 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
           std::pow(10.0, -double(cfg.frac_digits) - double(cfg.feed_frac_digits)) /
           tape::kSlowestRapidMmMin);
     // Saturated, one iteration per clock (per 2P clocks with BitSerial: SerialDda).
-    const uint64_t iteration = cfg.bit_serial ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
+    const uint64_t iteration = cfg.serial() ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
     total += std::max(iterations * iteration + 1, programmed) + prepare + 3;
   }
   return 2 * total + 100000;
@@ -73,7 +73,8 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
 
   PlayResult r;
-  r.config = interp_config(opt.clock_hz);  // the default machine
+  r.config = interp_config(opt.clock_hz);  // the default widths, in the chosen arch
+  r.config.arch = opt.arch;
   r.clock_hz = opt.clock_hz;
   r.reader_cps = opt.reader_cps;
   r.cycles_per_frame = FrameSource::cycles_per_frame_for(opt.clock_hz, opt.reader_cps);

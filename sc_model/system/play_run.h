@@ -20,6 +20,7 @@ namespace ncinterp::system {
 
 struct PlayOptions {
   EngineKind engine = EngineKind::kGolden;
+  Arch arch = Arch::kSerial;
   double clock_hz = 1e6;
   double reader_cps = 1000;  // tape reader, characters (frames) per second
   std::string vcd_path;      // empty: no VCD

@@ -1,13 +1,11 @@
-// The RTL engine: rtl/interp_top.sv verilated as plain C++ (VerilatedInterp, the cosim's
-// wrapper), stepped directly, and Verilator's own VCD tracer (VerilatedVcdC), opened on
-// demand. Without a VCD the model is the one built without tracing (Vinterp_top), which is
-// faster; with one it is Vinterp_top_trace.
+// The RTL engine: rtl/interp_top.sv of the configured arch verilated as plain C++
+// (VerilatedInterp, the cosim's wrapper), stepped directly, and Verilator's own VCD tracer
+// (VerilatedVcdC), opened on demand. Without a VCD the model is the one built without
+// tracing, which is faster; with one it is the trace-enabled one (rtl_models.h).
 #include <stdexcept>
-#include <type_traits>
 
-#include "Vinterp_top.h"
-#include "Vinterp_top_trace.h"
 #include "engine.h"
+#include "rtl_models.h"
 #include "verilated_interp.h"
 #include "vcd_time_base.h"
 #include "verilated_vcd_c.h"
@@ -16,11 +14,11 @@ namespace ncinterp::system {
 
 namespace {
 
-template <class Model>
+template <class Model, bool kTraced>
 class RtlEngine : public Engine {
  public:
   RtlEngine(const InterpConfig& cfg, double clock_hz)
-      : rtl_(cfg),
+      : rtl_(cfg, rtl_built_config(cfg.arch)),
         period_ps_(vcd_period_ps(clock_hz)) {}
   ~RtlEngine() override { close_vcd(); }
 
@@ -40,7 +38,7 @@ class RtlEngine : public Engine {
   const InterpOutputs& outputs() const override { return out_; }
 
   void open_vcd(const std::string& path) override {
-    if constexpr (!std::is_same_v<Model, Vinterp_top_trace>) {
+    if constexpr (!kTraced) {
       throw std::logic_error("RTL engine built without tracing");
     } else {
       close_vcd();
@@ -74,11 +72,16 @@ class RtlEngine : public Engine {
 }  // namespace
 
 std::unique_ptr<Engine> make_rtl_engine(const InterpConfig& cfg, double clock_hz, bool with_trace) {
-  // The verilated model has the RTL's default parameters: the configuration must match.
-  if (!cfg.same_parameters(InterpConfig{}))
+  // The verilated models have the RTL's default widths: the configuration must match.
+  if (!cfg.same_parameters(rtl_built_config(cfg.arch)))
     throw std::runtime_error("the verilated RTL has the default widths only");
-  if (with_trace) return std::make_unique<RtlEngine<Vinterp_top_trace>>(cfg, clock_hz);
-  return std::make_unique<RtlEngine<Vinterp_top>>(cfg, clock_hz);
+  if (with_trace)
+    return with_rtl_trace_model(cfg.arch, [&](auto model) -> std::unique_ptr<Engine> {
+      return std::make_unique<RtlEngine<typename decltype(model)::type, true>>(cfg, clock_hz);
+    });
+  return with_rtl_model(cfg.arch, [&](auto model) -> std::unique_ptr<Engine> {
+    return std::make_unique<RtlEngine<typename decltype(model)::type, false>>(cfg, clock_hz);
+  });
 }
 
 }  // namespace ncinterp::system

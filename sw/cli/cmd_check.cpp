@@ -18,6 +18,7 @@
 #include "check_report.h"
 #include "check_session.h"
 #include "command_registry.h"
+#include "machine_options.h"
 #include "inputs/contour_inputs.h"
 #include "tape/tape.h"
 
@@ -29,7 +30,7 @@ struct CheckArgs {
   std::string contour;
   double tol_mm = 0.01;
   std::string engine = "golden";
-  bool bit_serial = false;
+  Arch arch = Arch::kSerial;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
   std::string svg, report;
@@ -65,11 +66,7 @@ int run(const CheckArgs& a) {
   setup.clock_hz = a.clock_hz;
   setup.reader_cps = a.reader_cps;
   setup.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
-  if (a.bit_serial && setup.engine == EngineKind::kRtl)
-    throw std::invalid_argument(
-        "--bit-serial needs --engine golden: this build's verilated RTL is the parallel "
-        "one (the board's RTL is bit-serial: `ncinterp board-sim`)");
-  setup.bit_serial = a.bit_serial;
+  setup.arch = a.arch;
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";
@@ -128,10 +125,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
   cmd->add_option("--engine", args->engine, "golden model or verilated RTL")
       ->check(CLI::IsMember({"golden", "rtl"}))
       ->capture_default_str();
-  cmd->add_flag("--bit-serial", args->bit_serial,
-                "play as the board's RTL does: the arithmetic bit-serial (the DDA of the player and "
-                "of an arc's dry run 2P clocks per iteration, P = W rounded up to a power of two; a "
-                "digit's x10 + d a pass of its number width; interp_top's BitSerial; golden engine)");
+  add_arch_option(cmd, args->arch);
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();

@@ -19,6 +19,7 @@
 #include "output_set.h"
 #include "progress.h"
 #include "command_registry.h"
+#include "machine_options.h"
 #include "frame_source.h"
 #include "lockstep.h"
 #include "play_run.h"
@@ -30,6 +31,7 @@ namespace {
 
 struct CosimArgs {
   std::string tape;
+  Arch arch = Arch::kSerial;
   std::string report, vcd;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
@@ -76,6 +78,7 @@ nlohmann::json report_json(const CosimArgs& a, const cosim::Options& o, const co
                            uint64_t vcd_from, uint64_t vcd_to) {
   nlohmann::json j;
   j["tape"] = a.tape;
+  j["arch"] = arch_name(o.config.arch);
   j["clock_hz"] = a.clock_hz;
   j["reader_cps"] = a.reader_cps;
   j["cycles_per_frame"] = o.cycles_per_frame;
@@ -120,6 +123,7 @@ int run(const CosimArgs& a) {
 
   cosim::Options o;
   o.config = interp_config(a.clock_hz);
+  o.config.arch = a.arch;
   o.cycles_per_frame = FrameSource::cycles_per_frame_for(a.clock_hz, a.reader_cps);
   // Default limit: every frame read and every (good) block at its programmed or saturated
   // duration, doubled: no pair of correct engines reaches it.
@@ -172,9 +176,9 @@ int run(const CosimArgs& a) {
               << " (RTL and golden model agree on every clock)\n";
     return 1;
   }
-  std::printf("%s: RTL and golden model agree on all %llu cycles (%llu blocks, final position "
-              "X%lld Y%lld BLU); %.1f M cycles/s\n",
-              a.tape.c_str(), static_cast<unsigned long long>(r.cycles),
+  std::printf("%s: RTL and golden model (%s) agree on all %llu cycles (%llu blocks, final "
+              "position X%lld Y%lld BLU); %.1f M cycles/s\n",
+              a.tape.c_str(), arch_name(a.arch), static_cast<unsigned long long>(r.cycles),
               static_cast<unsigned long long>(r.stats.blocks), static_cast<long long>(r.last.pos_x),
               static_cast<long long>(r.last.pos_y),
               seconds > 0 ? static_cast<double>(r.cycles) / seconds / 1e6 : 0.0);
@@ -187,6 +191,7 @@ void setup(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "cosim", "Run the verilated RTL and the golden model in lock step, comparing every output every clock");
   cmd->add_option("tape", args->tape, "Tape: .tape (frames with parity) or plain text (.nc)")->required();
+  add_arch_option(cmd, args->arch);
   cmd->add_option("--report", args->report, "Write the JSON report to this file");
   cmd->add_option("--vcd", args->vcd, "On a mismatch, write a VCD of the RTL around it to this file");
   cmd->add_option("--vcd-window", args->vcd_window, "Cycles before the mismatch in the VCD")

@@ -16,6 +16,7 @@
 #include "output_set.h"
 #include "progress.h"
 #include "command_registry.h"
+#include "machine_options.h"
 #include "play_report.h"
 #include "play_run.h"
 #include "tape.h"
@@ -29,6 +30,7 @@ constexpr uint64_t kLargeVcdBytes = 100'000'000;
 struct PlayArgs {
   std::string tape;
   std::string engine = "golden";
+  Arch arch = Arch::kSerial;
   std::string vcd, vcd_from, vcd_to, report;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
@@ -46,6 +48,7 @@ int run(const PlayArgs& a) {
   AtomicOutputFile* vcd_out = outputs.add(a.vcd);
   PlayOptions opt;
   opt.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
+  opt.arch = a.arch;
   opt.clock_hz = a.clock_hz;
   opt.reader_cps = a.reader_cps;
   opt.vcd_path = a.vcd;
@@ -114,6 +117,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--engine", args->engine, "Interpolator: golden (C++ model) or rtl (verilated)")
       ->check(CLI::IsMember({"golden", "rtl"}))
       ->capture_default_str();
+  add_arch_option(cmd, args->arch);
   cmd->add_option("--vcd", args->vcd, "Write waves (VCD) to this file");
   const auto bound_check = [](const std::string& s) -> std::string {
     try {

@@ -17,11 +17,13 @@
 // memory and written atomically; bad options or an unreadable input end the command (exit
 // 1, one line naming the file), a point that fails keeps its reason in its row.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "atomic_file.h"
 #include "output_set.h"
@@ -46,7 +48,7 @@ using namespace ncinterp::sweep;
 struct SweepArgs {
   std::vector<std::string> inputs;
   // Grid axes, as given ("" = not an axis: the default).
-  std::string widths, feed_widths, pos_widths, blu, clock_hz;
+  std::string widths, feed_widths, pos_widths, blu, clock_hz, archs;
   std::vector<std::string> params;  // NAME=VALUES
   std::string arcs = "chords";
   double tol_mm = 0.01, feed_mm_min = 1000.0;
@@ -120,6 +122,18 @@ std::vector<GridAxis> grid_axes(const SweepArgs& a) {
   axis(kPosWidth, "--pos-widths", a.pos_widths, 8, 48, "bits");
   axis(kBlu, "--blu", a.blu, 1e-6, 1, "mm");
   axis(kClock, "--clock-hz", a.clock_hz, 1, 1e10, "Hz");
+  if (!a.archs.empty()) {
+    // The arch is interp_top's BitSerial: 1 serial, 0 parallel, in the order given.
+    GridAxis arch{kBitSerial, {}};
+    std::stringstream list(a.archs);
+    for (std::string name; std::getline(list, name, ',');) {
+      const double v = parse_arch(name) == Arch::kSerial ? 1 : 0;
+      if (std::find(arch.values.begin(), arch.values.end(), v) != arch.values.end())
+        throw std::invalid_argument("--archs: " + name + " is given twice");
+      arch.values.push_back(v);
+    }
+    axes.push_back(arch);
+  }
   for (const std::string& p : a.params) {
     const size_t eq = p.find('=');
     if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--param: '" + p + "' is not NAME=VALUES");
@@ -327,6 +341,9 @@ CommandRegistration registration("sweep", [](CLI::App& app) {
   cmd->add_option("--pos-widths", args->pos_widths, "PosWidth (position counters): list or range, bits");
   cmd->add_option("--blu", args->blu, "basic length unit, mm: list, e.g. 0.001,0.01 (sets FracDigits)");
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz: list (default 1e6)");
+  cmd->add_option("--archs", args->archs,
+                  "microarchitectures: serial, parallel or both (serial,parallel); the RTL parameter "
+                  "BitSerial, which the golden model and the RTL variants follow (default: serial)");
   cmd->add_option("--param", args->params, "any other RTL parameter: NAME=VALUES (list or range)");
   cmd->add_option("--tol", args->tol_mm, "delta: allowed total error, mm")->capture_default_str();
   cmd->add_option("--method", args->method, "chord method (Tamm 1, 2 or 3)")

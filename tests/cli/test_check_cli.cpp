@@ -128,20 +128,22 @@ TEST_F(CheckCli, BadSvgPathFailsBeforeTheRunAndLeavesNoReport) {
   EXPECT_EQ(files(), std::vector<std::string>{"circle.tape"});
 }
 
-// The bundled arc tape as the board plays it (the bit-serial DDA): the same path, a longer
-// run (each arc is prepared in 2PN clocks instead of N, and the first one has no block ahead
-// to hide it); the verilated RTL of this build cannot play it so.
-TEST_F(CheckCli, BitSerialPlaysTheSamePathInMoreClocks) {
+// The bundled arc tape in both archs: the same path, the serial one (the default, as the
+// boards play it) in a longer run (each arc is prepared in 2PN clocks instead of N, and the
+// first one has no block ahead to hide it). The report names the arch.
+TEST_F(CheckCli, BothArchsPlayTheSamePathTheSerialOneInMoreClocks) {
   const std::string tape = std::string(NCINTERP_EXAMPLES_DIR) + "/circle_r50.nc";
-  ASSERT_EQ(run("check " + tape + " --report " + path("parallel.json")), 0) << stderr_;
-  ASSERT_EQ(run("check " + tape + " --bit-serial --report " + path("serial.json")), 0) << stderr_;
+  ASSERT_EQ(run("check " + tape + " --arch parallel --report " + path("parallel.json")), 0) << stderr_;
+  ASSERT_EQ(run("check " + tape + " --report " + path("serial.json")), 0) << stderr_;
   const auto parallel = nlohmann::json::parse(slurp(path("parallel.json")));
   const auto serial = nlohmann::json::parse(slurp(path("serial.json")));
+  EXPECT_EQ(parallel["arch"], "parallel");
+  EXPECT_EQ(serial["arch"], "serial");
   EXPECT_EQ(serial["final_position"], parallel["final_position"]);
   EXPECT_EQ(serial["pulse_clocks"], parallel["pulse_clocks"]);
   EXPECT_GT(serial["cycles"].get<uint64_t>(), parallel["cycles"].get<uint64_t>());
-  EXPECT_EQ(run("check " + tape + " --bit-serial --engine rtl"), 1);
-  EXPECT_NE(stderr_.find("--bit-serial needs --engine golden"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("check " + tape + " --arch bitserial"), 1);
+  EXPECT_NE(stderr_.find("--arch"), std::string::npos) << stderr_;
 }
 
 TEST_F(CheckCli, UsageErrorsExitOne) {

@@ -16,7 +16,13 @@
 namespace ncinterp::tape {
 
 // G00, G01, G02, G03 (tape_motions.def: the code is the G number).
+// G00 (traverse) is read and written by the software tape library ahead of the interpolator:
+// the decoders (RTL and golden model) take their motions from tape_motions.def and refuse
+// G00 (error 6) until it is there. When the interpolator plays G00, the line
+// TAPE_MOTION(Rapid, 0, "G00") goes into tape_motions.def and the three kRapid / case 0
+// lines marked "G00 ahead of the decoders" (here, tape_reader.cpp, tape_writer.cpp) go.
 enum class Motion : uint8_t {
+  kRapid = 0,  // G00 ahead of the decoders
 #define TAPE_MOTION(name, code, word) k##name = code,
 #include "tape_motions.def"
 #undef TAPE_MOTION
@@ -31,6 +37,25 @@ const char* motion_word(Motion m);
 // The cycle limits of play and check (a run that needs more clocks has hung) count a G00
 // block as if it moved at this feed, slower than any machine's rapid rate.
 constexpr double kSlowestRapidMmMin = 100.0;
+
+// A G number that is a motion (tape_motions.def).
+constexpr bool is_motion(uint64_t g) {
+#define TAPE_MOTION(name, code, word) \
+  if (g == code) return true;
+#include "tape_motions.def"
+#undef TAPE_MOTION
+  return false;
+}
+
+// What the interpolator does with a G or M code that is not a motion (tape_codes.def).
+enum class CodeKind : uint8_t { kUnsupported, kSetting, kEnd };
+constexpr CodeKind code_kind(char letter, uint64_t number) {
+#define TAPE_CODE(l, n, kind, meaning) \
+  if (letter == #l[0] && number == n) return CodeKind::k##kind;
+#include "tape_codes.def"
+#undef TAPE_CODE
+  return CodeKind::kUnsupported;
+}
 
 struct Block {
   uint32_t n = 0;               // sequence number
@@ -48,6 +73,9 @@ struct Format {
   // Added after v1's first draft; the defaults are the interpolator's (InterpConfig).
   unsigned feed_width = 32;       // F <= 2^feed_width - 1
   unsigned seq_width = 20;        // N <= 2^seq_width - 1
+  // The interpolator plays G02/G03 (circle mode); without it an arc's G word is refused
+  // (TapeError::kNoCircleMode), as the lines-only interpolator refuses it.
+  bool circle_mode = true;
 };
 
 struct Program {

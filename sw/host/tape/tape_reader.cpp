@@ -202,7 +202,7 @@ class Reader {
       case Word::kN: n_ = static_cast<uint32_t>(value_); break;
       case Word::kG: g_code(); break;
       case Word::kM:
-        if (value_ != 2 && value_ != 30) unsupported("M");
+        if (code_kind('M', value_) != CodeKind::kEnd) unsupported("M");
         end_m30_ = value_ == 30;
         end_in_block_ = true;
         break;
@@ -217,13 +217,19 @@ class Reader {
 
   void g_code() {
     switch (value_) {
+      case 0: motion_ = Motion::kRapid; break;  // G00 ahead of the decoders (tape.h)
 #define TAPE_MOTION(name, code, word) \
   case code: motion_ = Motion::k##name; break;
 #include "tape_motions.def"
 #undef TAPE_MOTION
-      case 17: case 21: case 91: case 93: return;  // XY plane, mm, incremental, inverse time
-      default: unsupported("G");
+      default:
+        if (code_kind('G', value_) != CodeKind::kSetting) unsupported("G");
+        return;  // a setting: what the interpolator always does
     }
+    if (!format_.circle_mode && is_arc(motion_))
+      fail(TapeError::kNoCircleMode, word_offset_,
+           "G0" + std::to_string(value_) + ": an arc block, but the interpolator is built without "
+           "circle mode (lines only); write the arcs as chords (ncinterp tape --arcs chords)");
     motion_in_block_ = true;
   }
 

@@ -72,6 +72,7 @@ void check_block(const Block& b, const Format& f) {
 
 const char* motion_word(Motion m) {
   switch (m) {
+    case Motion::kRapid: return "G00";  // G00 ahead of the decoders (tape.h)
 #define TAPE_MOTION(name, code, word) \
   case Motion::k##name: return word;
 #include "tape_motions.def"

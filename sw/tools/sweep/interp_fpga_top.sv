@@ -21,7 +21,8 @@ module interp_fpga_top #(
   parameter int PosWidth       = 32,
   parameter int SeqWidth       = 20,
   parameter int OffsetWidth    = 32,
-  parameter int ModulusWidth   = 48
+  parameter int ModulusWidth   = 48,
+  parameter bit BitSerial      = 1'b1
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -60,7 +61,7 @@ module interp_fpga_top #(
   interp_top #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
-    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth)
+    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial)
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(modulus_q),

@@ -32,18 +32,20 @@ MeasureSetup measure_setup(const DesignPoint& p, const MeasureSetup& defaults) {
   m.first_stage.blu_mm = point_value(p, kBlu, defaults.first_stage.blu_mm);
   m.clock_hz = point_value(p, kClock, defaults.clock_hz);
   m.pos_width = static_cast<unsigned>(point_value(p, kPosWidth, defaults.pos_width));
+  m.arch = point_value(p, kBitSerial, defaults.arch == Arch::kSerial ? 1 : 0) != 0 ? Arch::kSerial
+                                                                                   : Arch::kParallel;
   return m;
 }
 
-// The lock-step RTL variants are verilated with IncWidth alone (rtl_variant.h): a point
-// that sets any other RTL parameter or another BLU has no variant.
+// The lock-step RTL variants are verilated with IncWidth, FracDigits and BitSerial
+// (rtl_variant.h): a point that sets any other RTL parameter has no variant.
 std::string rtl_variant_refusal(const DesignPoint& p, const MeasureSetup& defaults) {
   for (const auto& [name, value] : p) {
-    if (name == kIncWidth || name == kClock) continue;
+    if (name == kIncWidth || name == kClock || name == kBlu || name == kBitSerial) continue;
     const bool is_default = (name == kFeedWidth && value == defaults.first_stage.feed_width) ||
-                            (name == kPosWidth && value == defaults.pos_width) ||
-                            (name == kBlu && value == 0.001);
-    if (!is_default) return "not run (the RTL variants vary IncWidth only; " + name + "=" + value_text(value) + ")";
+                            (name == kPosWidth && value == defaults.pos_width);
+    if (!is_default)
+      return "not run (the RTL variants vary IncWidth, BLU and the arch only; " + name + "=" + value_text(value) + ")";
   }
   return "";
 }
@@ -133,7 +135,8 @@ PointResult run_point(const DesignPoint& p, const std::string& key, const PointS
     try {
       RtlVariantSetup variant = setup.rtl_variant;
       variant.clock_hz = m.clock_hz;
-      row.rtl = run_rtl_variant(variant, row.width, tape_paths);
+      row.rtl = run_rtl_variant(variant, RtlVariant{row.width, frac_digits_of(m.first_stage.blu_mm), m.arch},
+                                tape_paths);
     } catch (const std::exception& e) {
       row.rtl.summary = std::string("RTL variant: ") + e.what();
     }

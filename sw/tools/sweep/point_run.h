@@ -26,6 +26,9 @@ inline constexpr const char* kFeedWidth = "FeedWidth";
 inline constexpr const char* kPosWidth = "PosWidth";
 inline constexpr const char* kBlu = "blu_mm";
 inline constexpr const char* kClock = "clock_hz";
+// interp_top's BitSerial (1 = the serial arch, 0 = the parallel one): an RTL parameter that
+// the golden model and the RTL variant take too (`--archs`).
+inline constexpr const char* kBitSerial = "BitSerial";
 // IncWidth the golden model and the RTL take.
 inline constexpr unsigned kMinWidth = 2;
 inline constexpr unsigned kMaxWidth = 32;
@@ -36,7 +39,7 @@ struct PointSetup {
   bool synthesis = true;
   SynthesisSetup synth;
   std::string synth_key;      // synthesis_key(synth), when synthesis is on
-  bool rtl = true;            // the verilated variant in lock step (IncWidth-only points)
+  bool rtl = true;            // the verilated variant in lock step (IncWidth, BLU, arch points)
   RtlVariantSetup rtl_variant;
   std::string tape_dir;       // tapes for the RTL variant: <tape_dir>/<key>/
 };

@@ -40,6 +40,7 @@ InputResult measure_input(const SweepInput& input, unsigned width, const Measure
   cs.clock_hz = setup.clock_hz;
   cs.reader_cps = setup.reader_cps;
   cs.pos_width = setup.pos_width;
+  cs.arch = setup.arch;
   cs.engine = EngineKind::kGolden;
   cs.keep_pulses = false;
   try {

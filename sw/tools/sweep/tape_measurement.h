@@ -7,6 +7,7 @@
 // interpolator's error) and the contour (the total error), and every block's time
 // against 1/F. This is the `ncinterp tape` + `ncinterp check` path, in memory.
 #pragma once
+#include "interp_ports.h"
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct MeasureSetup {
   double clock_hz = 1e6;
   double reader_cps = 1000.0;                 // tape reader, characters per second
   unsigned pos_width = 32;                    // the golden model's position counters
+  Arch arch = Arch::kSerial;                  // the golden model's microarchitecture
 };
 
 // The tape the first stage makes for the input at width W, as `ncinterp tape` writes it.

@@ -37,11 +37,9 @@ std::string first_difference(const InterpOutputs& g, const InterpOutputs& r) {
 // returns the golden outputs at the end, failing at the first clock where any differs.
 InterpOutputs play_in_lock_step(const std::string& text) {
   InterpConfig cfg = interp_config(1e6);
-#ifdef NCINTERP_RTL_BIT_SERIAL
-  cfg.bit_serial = true;
-#endif
+  cfg.arch = NCINTERP_RTL_BIT_SERIAL ? Arch::kSerial : Arch::kParallel;
   GoldenInterp golden(cfg);
-  VerilatedInterp<NCINTERP_GATE_MODEL> gate(cfg);
+  VerilatedInterp<NCINTERP_GATE_MODEL> gate(cfg, cfg);
   golden.reset();
   FrameSource source(tape::add_parity(text), 1);
   EXPECT_TRUE(gate.same_as(golden.outputs())) << "after reset";

@@ -90,7 +90,7 @@ TEST(EventJump, JumpedRunEqualsClockedAtEveryEvent) {
     for (uint64_t cpf : {1ull, 7ull, 300ull}) {
       for (int k = 0; k < 3; ++k) {
         InterpConfig cfg;
-        cfg.bit_serial = serial;
+        cfg.arch = serial ? Arch::kSerial : Arch::kParallel;
         cfg.feed_modulus = 60ull * 100000ull * 1000ull;  // a 100 kHz clock: short runs
         const tape::Program p = mixed_program(rng, rapids);
         skipped += expect_jumped_equals_clocked(test::frames_of(p), cfg, cpf, nullptr);

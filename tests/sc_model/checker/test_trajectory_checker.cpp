@@ -22,13 +22,13 @@ std::string first_violation(const TrajectoryChecker& c) {
 }
 
 // Random line programs on the golden model pass every rule: the documented schedule of
-// every pulse, the block times and the path bound. bit_serial: the board's player
-// (2P = 32 clocks per iteration), with which many of these blocks are saturated.
-void clean_random_line_programs_pass_every_rule(bool bit_serial) {
+// every pulse, the block times and the path bound, in both archs (the serial player takes
+// 2P = 32 clocks per iteration, so many of these blocks are saturated).
+void clean_random_line_programs_pass_every_rule(Arch arch) {
   std::mt19937 rng(11);
   CheckSetup setup;
   setup.clock_hz = 1e6;
-  setup.bit_serial = bit_serial;
+  setup.arch = arch;
   int saturated = 0, unsaturated = 0;
   const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
   for (int prog = 0; prog < 150; ++prog) {
@@ -59,12 +59,12 @@ void clean_random_line_programs_pass_every_rule(bool bit_serial) {
   EXPECT_GT(unsaturated, 100);
 }
 
-TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRule) {
-  clean_random_line_programs_pass_every_rule(false);
+TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheParallelPlayer) {
+  clean_random_line_programs_pass_every_rule(Arch::kParallel);
 }
 
-TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheBitSerialPlayer) {
-  clean_random_line_programs_pass_every_rule(true);
+TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheSerialPlayer) {
+  clean_random_line_programs_pass_every_rule(Arch::kSerial);
 }
 
 // The pulse path of a chord polygon inscribed in a circle: the checker's total error at

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "arc_cases.h"
+#include "dda_serial.h"
 
 namespace ncinterp::test {
 
@@ -80,8 +81,9 @@ std::vector<uint8_t> program_frames(const tape::Program& program, unsigned inc_w
 
 ::testing::AssertionResult check_program_run(const tape::Program& program,
                                              const OutputRecorder& rec,
-                                             const BlockClocks& clocks, uint64_t modulus,
-                                             unsigned inc_width) {
+                                             const BlockClocks& clocks, const InterpConfig& cfg) {
+  const uint64_t modulus = cfg.feed_modulus;
+  const unsigned inc_width = cfg.inc_width, lead = SerialDda::player_lead_bits(cfg);
   struct Expect {
     const tape::Block* block;
     int64_t x0, y0;  // tool position at the block's start
@@ -140,9 +142,9 @@ std::vector<uint8_t> program_frames(const tape::Program& program, unsigned inc_w
                << e.count[a][0] << " minus pulses, programmed " << want[a];
     }
     const uint64_t iterations = block_iterations(*e.block, inc_width);
-    const bool saturated = e.block->feed * iterations >= modulus;
+    const bool saturated = (e.block->feed * iterations << lead) >= modulus;
     const uint64_t want_clocks =
-        saturated ? iterations + 1 : (modulus + e.block->feed - 1) / e.block->feed;
+        saturated ? (iterations << lead) + 1 : (modulus + e.block->feed - 1) / e.block->feed;
     auto bc = clocks.busy.find(n);
     const uint64_t got = bc == clocks.busy.end() ? 0 : bc->second;
     if (got != want_clocks)
@@ -155,7 +157,7 @@ std::vector<uint8_t> program_frames(const tape::Program& program, unsigned inc_w
     auto it = by_n.find(s.block);
     if (it == by_n.end()) continue;
     const tape::Block& b = *it->second.block;
-    const bool saturated = b.feed * block_iterations(b, inc_width) >= modulus;
+    const bool saturated = (b.feed * block_iterations(b, inc_width) << lead) >= modulus;
     if (s.saturated != saturated)
       return ::testing::AssertionFailure() << "block N" << b.n << ": feed_saturated_o "
                                            << s.saturated << ", expected " << saturated;

@@ -43,11 +43,12 @@ struct BlockClocks {
 //   sum of the increments;
 // - every pulse position is within the bound of its block: the L1 bound of the chord for a
 //   line (docs/interpolator.md 5.6), the circle bounds above for an arc;
-// - each block is busy for ceil(M / F) clocks, or iterations + 1 when saturated, and
-//   feed_saturated_o shows which.
+// - each block is busy for ceil(M / F) clocks, or when saturated (S << lead >= M, the
+//   DDA's clocks per iteration are 2^lead: 1 parallel, 2P serial) its iterations' clocks
+//   + 1, and feed_saturated_o shows which.
+// The machine is cfg's (its arch, width and feed modulus).
 ::testing::AssertionResult check_program_run(const tape::Program& program,
                                              const OutputRecorder& rec,
-                                             const BlockClocks& clocks, uint64_t modulus,
-                                             unsigned inc_width = 16);
+                                             const BlockClocks& clocks, const InterpConfig& cfg);
 
 }  // namespace ncinterp::test

@@ -21,9 +21,10 @@ using cosim::Result;
 using test::BlockClocks;
 using test::OutputRecorder;
 
-Options options_at(double clock_hz) {
+Options options_at(double clock_hz, Arch arch = Arch::kSerial) {
   Options o;
   o.config = interp_config(clock_hz);
+  o.config.arch = arch;
   o.cycles_per_frame = 1;
   o.max_cycles = 100'000'000;
   return o;
@@ -37,8 +38,8 @@ Result run(const std::vector<uint8_t>& frames, const Options& o, OutputRecorder&
   });
 }
 
-TEST(CircleCosim, FiftyMillimetreCircleOfFourQuadrants) {
-  const Options o = options_at(1e6);
+void fifty_millimetre_circle(Arch arch) {
+  const Options o = options_at(1e6, arch);
   tape::Program p;
   const int64_t r = 50000;
   const int64_t start[4][2] = {{r, 0}, {0, r}, {-r, 0}, {0, -r}};
@@ -60,22 +61,30 @@ TEST(CircleCosim, FiftyMillimetreCircleOfFourQuadrants) {
   ASSERT_EQ(res.end, Result::End::kDone);
   EXPECT_EQ(res.last.pos_x, 0);
   EXPECT_EQ(res.last.pos_y, 0);
-  ASSERT_TRUE(test::check_program_run(p, rec, clocks, o.config.feed_modulus));
+  ASSERT_TRUE(test::check_program_run(p, rec, clocks, o.config));
   double worst = 0;
   for (const auto& pulse : rec.pulses)
     worst = std::max(worst, std::fabs(std::hypot(double(pulse.x + r), double(pulse.y)) - double(r)));
   EXPECT_LE(worst, kCircleDdaBound);
 }
 
+TEST(CircleCosim, FiftyMillimetreCircleOfFourQuadrantsSerial) {
+  fifty_millimetre_circle(Arch::kSerial);
+}
+TEST(CircleCosim, FiftyMillimetreCircleOfFourQuadrantsParallel) {
+  fifty_millimetre_circle(Arch::kParallel);
+}
+
 // Random programs in shards, so ctest can run them in parallel: 4 shards x 8 tapes x 12
-// blocks, about 80 % arcs: some 300 arcs.
+// blocks, about 80 % arcs: some 300 arcs; every other tape in each arch.
 class CircleCosimRandom : public ::testing::TestWithParam<int> {};
 
 TEST_P(CircleCosimRandom, RtlEqualsGoldenOnArcProgramsAndThePathIsExact) {
   const int shard = GetParam();
-  const Options o = options_at(1e3);  // high feeds saturate: short runs
   std::mt19937_64 rng(1000 + shard);
   for (int t = 0; t < 8; ++t) {
+    // High feeds saturate: short runs.
+    const Options o = options_at(1e3, t % 2 ? Arch::kParallel : Arch::kSerial);
     const tape::Program p = test::random_arc_program(rng, 12, 0.8, o.config.feed_modulus);
     OutputRecorder rec;
     BlockClocks clocks;
@@ -84,7 +93,7 @@ TEST_P(CircleCosimRandom, RtlEqualsGoldenOnArcProgramsAndThePathIsExact) {
                                << cosim::describe(*res.mismatch);
     ASSERT_EQ(res.end, Result::End::kDone) << "shard " << shard << " tape " << t;
     ASSERT_EQ(res.stats.blocks, p.blocks.size());
-    ASSERT_TRUE(test::check_program_run(p, rec, clocks, o.config.feed_modulus))
+    ASSERT_TRUE(test::check_program_run(p, rec, clocks, o.config))
         << "shard " << shard << " tape " << t;
   }
 }

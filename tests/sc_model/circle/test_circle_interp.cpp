@@ -78,36 +78,50 @@ double max_circle_error(const OutputRecorder& rec) {
   return worst;
 }
 
+// Each arch at a clock where a quadrant (N = 102944 iterations in 0.2 s) is not saturated:
+// the parallel one at 1 MHz, the serial one (2P = 32 clocks per iteration) at 20 MHz.
+InterpConfig unsaturated_circle_machine(Arch arch) {
+  InterpConfig cfg = interp_config(arch == Arch::kSerial ? 20e6 : 1e6);
+  cfg.arch = arch;
+  return cfg;
+}
+
+// Clocks of the 0.2 s (1/F) a quadrant takes on that machine.
+uint64_t quadrant_clocks(const InterpConfig& cfg) { return cfg.feed_modulus / 300000; }
+
 TEST(CircleInterp, FiftyMillimetreCircleOfFourQuadrantsReturnsToItsStart) {
-  const InterpConfig cfg = interp_config(1e6);
-  for (bool ccw : {true, false}) {
-    const tape::Program p = circle_program(1, ccw);
-    PlayRun r = play(cfg, test::program_frames(p));
-    ASSERT_TRUE(r.out.done) << "error " << int(r.out.error_code);
-    EXPECT_EQ(r.out.pos_x, 0);
-    EXPECT_EQ(r.out.pos_y, 0);
-    ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg.feed_modulus));
-    EXPECT_LE(max_circle_error(r.rec), kCircleDdaBound);
-    // No gaps: the four blocks follow each other (0.2 s each, 1/F).
-    EXPECT_EQ(r.rec.busy_cycles, 4 * 200000u);
-    ASSERT_EQ(r.rec.starts.size(), 4u);
-    for (int i = 1; i < 4; ++i)
-      EXPECT_EQ(r.rec.starts[i].cycle - r.rec.starts[i - 1].cycle, 200000u);
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    SCOPED_TRACE(arch_name(arch));
+    const InterpConfig cfg = unsaturated_circle_machine(arch);
+    for (bool ccw : {true, false}) {
+      const tape::Program p = circle_program(1, ccw);
+      PlayRun r = play(cfg, test::program_frames(p));
+      ASSERT_TRUE(r.out.done) << "error " << int(r.out.error_code);
+      EXPECT_EQ(r.out.pos_x, 0);
+      EXPECT_EQ(r.out.pos_y, 0);
+      ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg));
+      EXPECT_LE(max_circle_error(r.rec), kCircleDdaBound);
+      // No gaps: the four blocks follow each other (0.2 s each, 1/F).
+      EXPECT_EQ(r.rec.busy_cycles, 4 * quadrant_clocks(cfg));
+      ASSERT_EQ(r.rec.starts.size(), 4u);
+      for (int i = 1; i < 4; ++i)
+        EXPECT_EQ(r.rec.starts[i].cycle - r.rec.starts[i - 1].cycle, quadrant_clocks(cfg));
+    }
   }
 }
 
 TEST(CircleInterp, TenTurnsDoNotDrift) {
-  const InterpConfig cfg = interp_config(1e6);
+  const InterpConfig cfg = unsaturated_circle_machine(Arch::kSerial);
   const tape::Program p = circle_program(10, true);
   PlayRun r = play(cfg, test::program_frames(p));
   ASSERT_TRUE(r.out.done);
   EXPECT_EQ(r.out.pos_x, 0);
   EXPECT_EQ(r.out.pos_y, 0);
-  ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg.feed_modulus));
+  ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg));
   // Each turn's pulses are the first turn's, shifted by one turn's duration.
   const size_t per_turn = r.rec.pulses.size() / 10;
   ASSERT_EQ(r.rec.pulses.size(), 10 * per_turn);
-  const uint64_t period = 4 * 200000;
+  const uint64_t period = 4 * quadrant_clocks(cfg);
   for (size_t i = 0; i < r.rec.pulses.size(); ++i) {
     const auto& a = r.rec.pulses[i % per_turn];
     const auto& b = r.rec.pulses[i];
@@ -128,7 +142,7 @@ TEST(CircleInterp, RandomProgramsOfArcsAndLines) {
     PlayRun r = play(cfg, test::program_frames(p), 1 + rng() % 3);
     ASSERT_TRUE(r.out.done) << "tape " << t << ": error " << int(r.out.error_code) << " block "
                             << r.out.error_block;
-    ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg.feed_modulus)) << "tape " << t;
+    ASSERT_TRUE(test::check_program_run(p, r.rec, r.clocks, cfg)) << "tape " << t;
   }
   EXPECT_GT(arcs, 250);
 }

@@ -67,10 +67,14 @@ TEST_P(CosimRandom, RtlEqualsGoldenAndPulsesAreExactWithinTheBound) {
 INSTANTIATE_TEST_SUITE_P(Shards, CosimRandom, ::testing::Range(0, 6));
 
 // The same with a 1 MHz clock and realistic feeds: phase-accumulated blocks with long
-// idle stretches between iterations, and a slow reader that leaves gaps.
-TEST(Cosim, SlowReaderAndRealFeedsStayInLockStep) {
+// idle stretches between iterations, and a slow reader that leaves gaps; in both archs
+// (the serial one saturates the first block too: 2P clocks per iteration).
+class CosimArch : public ::testing::TestWithParam<Arch> {};
+
+TEST_P(CosimArch, SlowReaderAndRealFeedsStayInLockStep) {
   Options o;
   o.config = interp_config(1e6);
+  o.config.arch = GetParam();
   o.cycles_per_frame = 200;
   const std::vector<LineBlock> prog = {{1, 1234, -567, 3000000}, {2, -5, 2, 20000000},
                                        {3, 0, 0, 90000000},      {4, 65535, 65535, 4000000000ull}};
@@ -80,8 +84,11 @@ TEST(Cosim, SlowReaderAndRealFeedsStayInLockStep) {
   ASSERT_EQ(r.end, Result::End::kDone);
   EXPECT_TRUE(check_line_program(prog, rec));
   EXPECT_GT(r.stats.gap_cycles, 0u);
-  EXPECT_EQ(r.stats.saturated_blocks, 1u);
+  EXPECT_EQ(r.stats.saturated_blocks, GetParam() == Arch::kSerial ? 2u : 1u);
 }
+
+INSTANTIATE_TEST_SUITE_P(Archs, CosimArch, ::testing::Values(Arch::kSerial, Arch::kParallel),
+                         [](const ::testing::TestParamInfo<Arch>& i) { return arch_name(i.param); });
 
 class CosimBadTape : public ::testing::TestWithParam<test::BadTape> {};
 

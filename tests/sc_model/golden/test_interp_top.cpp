@@ -1,6 +1,9 @@
 // Unit tests of the golden cycle model against the timing and rules of
 // docs/interpolator.md: handshake, block latency, feed timing, DDA pulses, gaps, errors,
-// fault hook, and random line tapes checked against the programmed increments.
+// fault hook, and random line tapes checked against the programmed increments. The tests
+// of clock-exact formulas are the parallel arch's (one iteration per clock, where the
+// formulas are shortest); the serial arch's clocks are the lock-step tests' against its RTL
+// and the trajectory checker's schedule rules (tests/sc_model/checker).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +26,13 @@ using test::OutputRecorder;
 constexpr uint64_t kMaxCycles = 50'000'000;
 
 uint64_t ceil_div(uint64_t a, uint64_t b) { return (a + b - 1) / b; }
+
+// The parallel arch at this clock: the machine the clock-exact formulas below describe.
+InterpConfig parallel_at(double clock_hz) {
+  InterpConfig cfg = interp_config(clock_hz);
+  cfg.arch = Arch::kParallel;
+  return cfg;
+}
 
 unsigned bit_length(uint64_t x) {
   unsigned k = 0;
@@ -49,7 +59,7 @@ TEST(GoldenInterp, RejectsWidthsItCannotModel) {
 // iteration per clock, and after j iterations X has exactly j pulses (2^31 + j (2^32 - 1)
 // < (j + 1) 2^32) and Y, with |dy| = 2^31, floor((j + 1) / 2).
 TEST(GoldenInterp, PlaysAFullWidthBlockAt32Bits) {
-  InterpConfig cfg = interp_config(1e6);
+  InterpConfig cfg = parallel_at(1e6);
   cfg.inc_width = 32;
   const char* tape = "%\nG17 G21 G91 G93\nN1 G01 X4294967.295 Y-2147483.648 F4000000.000\nM02\n%\n";
   GoldenInterp dut(cfg);
@@ -67,7 +77,7 @@ TEST(GoldenInterp, PlaysAFullWidthBlockAt32Bits) {
 // One block, not saturated: pulses come exactly at the iterations the phase accumulator
 // and the integrators dictate (docs 5.2/5.3), and the block takes ceil(M/F) clocks.
 TEST(GoldenInterp, SingleBlockPulseTimesFollowTheFeedAndDdaFormulas) {
-  const InterpConfig cfg = interp_config(1e6);
+  const InterpConfig cfg = parallel_at(1e6);
   const std::vector<LineBlock> prog = {{1, 1000, -500, 600000}};
   GoldenInterp dut(cfg);
   OutputRecorder rec;
@@ -112,7 +122,7 @@ TEST(GoldenInterp, BlockDurationRoundsTheProgrammedTimeUp) {
 }
 
 TEST(GoldenInterp, SaturatedBlockTakesTwoToTheKPlusOneClocksAndSaysSo) {
-  const InterpConfig cfg = interp_config(1e6);
+  const InterpConfig cfg = parallel_at(1e6);
   const std::vector<LineBlock> prog = {{7, 1000, 300, 4000000000ull}};  // F << 10 >= M
   GoldenInterp dut(cfg);
   OutputRecorder rec;
@@ -141,7 +151,7 @@ TEST(GoldenInterp, ZeroMoveIsADwellOfOneOverF) {
 TEST(GoldenInterp, HandshakeAndBlockLatency) {
   const std::string text = "%\nN1 G01 X0.002 F100.000\nM02\n%\n";
   const size_t lf = text.find('\n', text.find("N1"));
-  GoldenInterp dut(interp_config(1e6));
+  GoldenInterp dut(parallel_at(1e6));
   FrameSource source(frames_of(text), 1);
   std::vector<bool> ready{dut.outputs().frame_ready}, busy{false};
   std::vector<uint64_t> taken{0};
@@ -183,8 +193,7 @@ TEST(GoldenInterp, BlocksFollowWithoutGapsWhenTheReaderIsFast) {
 }
 
 TEST(GoldenInterp, SlowReaderLeavesObservableGaps) {
-  InterpConfig cfg;
-  cfg.feed_modulus = InterpConfig::feed_modulus_for(1000.0, 3);
+  const InterpConfig cfg = parallel_at(1000.0);
   const std::vector<LineBlock> prog = {{1, 4, 1, 600000000}, {2, 3, -4, 600000000}};
   const std::string text = test::line_tape_text(prog);
   const size_t lf2 = text.find('\n', text.find("N2"));

@@ -172,7 +172,9 @@ TEST(PlayMonitor, GoldenRunsMeetTheGuarantees) {
   for (int trial = 0; trial < 40; ++trial) {
     SCOPED_TRACE(trial);
     const double clock_hz = 2000;  // M = 1.2e8: 545..6000 clocks per block
+    // The parallel arch: one iteration per clock, so both regimes at these feeds.
     InterpConfig cfg = interp_config(clock_hz);
+    cfg.arch = Arch::kParallel;
     tape::Program p;
     const int blocks = 1 + static_cast<int>(rng() % 8);
     for (int k = 0; k < blocks; ++k) {

@@ -96,7 +96,11 @@ void play_matches_plain_golden(EngineKind engine) {
   EXPECT_EQ(r.summary.final_y, -1);
   EXPECT_TRUE(r.summary.path_within_bound);
   EXPECT_EQ(r.summary.blocks_played, p.blocks.size());
-  EXPECT_EQ(r.summary.saturated_blocks, 1u);
+  // Both regimes: the blocks the plain model saturates (the serial arch, the default,
+  // iterates at most every 2P clocks, so more of them), and timed ones.
+  EXPECT_EQ(r.summary.saturated_blocks, reference.saturated_blocks);
+  EXPECT_GE(r.summary.saturated_blocks, 1u);
+  EXPECT_LT(r.summary.saturated_blocks, p.blocks.size());
   EXPECT_LT(r.summary.worst_time_error_cycles, 1.0);
   EXPECT_GE(r.summary.worst_time_error_cycles, 0.0);
 }

@@ -1,6 +1,6 @@
-// ncinterp_rtl_variant: the lock-step cosim (sc_model/cosim/lockstep.h) of one width
-// variant of the RTL (verilated with -GIncWidth=W, and -GBitSerial=1'b1 if so
-// configured) against the golden model with the same parameters.
+// ncinterp_rtl_variant: the lock-step cosim (sc_model/cosim/lockstep_loop.h) of one variant
+// of the RTL (verilated with -GIncWidth=W -GFracDigits=D -GBitSerial=B) against the golden
+// model with the same parameters.
 // Usage: ncinterp_rtl_variant [--clock-hz F] [--reader-cps C] TAPE...   (.tape frames)
 // Prints one line per tape, "done CYCLES TAPE" when both engines agreed on every clock up
 // to the end of the program, else "mismatch|error|cycle_limit CYCLES TAPE: detail".
@@ -13,8 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "Vinterp_top.h"
 #include "frame_source.h"
-#include "lockstep.h"
+#include "lockstep_loop.h"
+#include "verilated_interp.h"
 
 namespace {
 
@@ -49,15 +51,17 @@ int main(int argc, char** argv) {
 
   cosim::Options options;
   options.config.inc_width = NCINTERP_RTL_INC_WIDTH;
-#ifdef NCINTERP_RTL_BIT_SERIAL
-  options.config.bit_serial = true;
-#endif
+  options.config.frac_digits = NCINTERP_RTL_FRAC_DIGITS;
+  options.config.arch = NCINTERP_RTL_BIT_SERIAL ? Arch::kSerial : Arch::kParallel;
+  options.config.circle_mode = NCINTERP_RTL_CIRCLE_MODE;
+  const InterpConfig built = options.config;
   options.config.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, options.config.feed_frac_digits);
   options.cycles_per_frame = FrameSource::cycles_per_frame_for(clock_hz, reader_cps);
   int code = 0;
   for (const std::string& tape : tapes) {
     try {
-      const cosim::Result r = cosim::run_lockstep(read_frames(tape), options);
+      VerilatedInterp<Vinterp_top> rtl(options.config, built);
+      const cosim::Result r = cosim::run_lockstep_on(rtl, read_frames(tape), options);
       switch (r.end) {
         case cosim::Result::End::kDone: std::cout << "done " << r.cycles << " " << tape << "\n"; break;
         case cosim::Result::End::kMismatch:
