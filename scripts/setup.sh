@@ -15,6 +15,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   verilator libsystemc-dev            # RTL simulation, system model
   libcli11-dev nlohmann-json3-dev     # command line, JSON reports
+  libboost-dev                        # Boost.Geometry's R-tree (the checker's contour distance)
 )
 if ((!demo)); then
   packages+=(

@@ -28,16 +28,7 @@ json stat_json(const ErrorStat& s, const TrajectoryChecker& c, const Frame& f) {
   return j;
 }
 
-const char* motion_name(tape::Motion m) {
-  switch (m) {
-#define TAPE_MOTION(name, code, word) \
-  case tape::Motion::k##name:         \
-    return word;
-#include "tape_motions.def"
-#undef TAPE_MOTION
-  }
-  return "?";
-}
+const char* motion_name(tape::Motion m) { return tape::motion_word(m); }
 
 std::string fmt(const char* format, double v) {
   char buf[64];
@@ -55,7 +46,7 @@ FeedSummary feed_summary(const TrajectoryChecker& c) {
   FeedSummary s;
   for (size_t k = 0; k < c.results().size(); ++k) {
     const BlockResult& r = c.results()[k];
-    if (!r.finished) continue;
+    if (!r.finished || r.rapid) continue;  // a G00 block has no programmed feed
     if (r.saturated) {
       ++s.saturated;
       continue;

@@ -102,7 +102,6 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.lead_bits = SerialDda::player_lead_bits(cfg);
   co.rapid_step = cfg.rapid_step_on_port();
   co.arc_bound_blu = setup.arc_bound_blu;
-  co.tol_blu = out.tol_blu;
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);
   const uint64_t budget =
@@ -111,16 +110,22 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
 
   TrajectoryChecker& checker = *out.checker;
   const auto& progress = setup.progress;
-  auto observe = [&checker, &progress, budget](uint64_t cycle, const InterpOutputs& o) {
+  constexpr uint64_t kProgressEvery = uint64_t{1} << 22;
+  uint64_t next_progress = 0;
+  auto observe = [&checker, &progress, &next_progress, budget](uint64_t cycle, const InterpOutputs& o) {
     checker.observe(cycle, o);
-    if ((cycle & ((uint64_t{1} << 22) - 1)) == 0 && progress) progress(cycle, budget);
+    if (cycle >= next_progress && progress) {
+      progress(cycle, budget);
+      next_progress = (cycle / kProgressEvery + 1) * kProgressEvery;
+    }
   };
   FrameSource source(frames, cpf);
   const auto t0 = std::chrono::steady_clock::now();
   if (setup.engine == EngineKind::kGolden) {
     GoldenInterp dut(cfg);
     if (setup.fault) dut.inject(*setup.fault);
-    out.run = run_engine(dut, source, budget, observe);
+    out.run = setup.every_clock ? run_engine(dut, source, budget, observe)
+                                : run_engine_jumping(dut, source, budget, checker, observe);
   } else {
 #ifdef NCINTERP_CHECKER_HAS_RTL
     out.run = with_rtl_model(cfg.arch, [&](auto model) {

@@ -41,6 +41,9 @@ struct CheckSetup {
   bool schedule = true;            // documented-timing rules for line blocks
   double arc_bound_blu = kCircleDdaBound;  // see CheckerOptions
   uint64_t max_cycles = 0;         // 0: enough for the program (estimated from the tape)
+  // Golden engine: tick every clock instead of passing the quiet ones in one step
+  // (run_engine_jumping, engine_run.h); the verdict and the report are the same.
+  bool every_clock = false;
   // Golden engine only: a fault injected through the model's test hook.
   std::optional<GoldenInterp::Fault> fault;
   // Called every 2^22 clocks with (clocks so far, clock budget): progress display.

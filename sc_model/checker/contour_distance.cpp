@@ -2,10 +2,24 @@
 #include "contour_distance.h"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace ncinterp::checker {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using BoxPoint = bg::model::point<double, 2, bg::cs::cartesian>;
+using IndexBox = bg::model::box<BoxPoint>;
+using IndexValue = std::pair<IndexBox, int>;
+
+struct ContourDistance::Index {
+  bgi::rtree<IndexValue, bgi::rstar<16>> tree;
+};
+
 namespace {
 
 using firststage::SegmentKind;
@@ -48,6 +62,17 @@ double ContourDistance::Box::distance_sq(Vec2 q) const {
 }
 
 ContourDistance::ContourDistance(std::vector<Segment> segments) : segments_(std::move(segments)) {
+  build_pieces();
+  std::vector<IndexValue> boxes;
+  boxes.reserve(pieces_.size());
+  for (size_t s = 0; s < pieces_.size(); ++s) {
+    const Box& b = pieces_[s].box;
+    boxes.push_back({IndexBox(BoxPoint(b.x0, b.y0), BoxPoint(b.x1, b.y1)), static_cast<int>(s)});
+  }
+  index_ = std::make_shared<const Index>(Index{{boxes.begin(), boxes.end()}});  // packed (bulk loaded)
+}
+
+void ContourDistance::build_pieces() {
   pieces_.resize(segments_.size());
   for (size_t s = 0; s < segments_.size(); ++s) {
     const Segment& seg = segments_[s];
@@ -77,15 +102,39 @@ ContourDistance::ContourDistance(std::vector<Segment> segments) : segments_(std:
   }
 }
 
+// Reach m of a candidate list, BLU (the checker's units): a list serves the pulses within
+// m of where it was made. Larger lists serve longer and cost more per query.
+constexpr double kCandidateReach = 16.0;
+
+void ContourDistance::refresh_candidates(Vec2 q) const {
+  const auto& tree = index_->tree;
+  // U: the distance to the last answer's segment, or to the segment of the nearest box.
+  ContourFoot u;
+  u.distance = std::numeric_limits<double>::infinity();
+  if (have_candidates_) {
+    search(hint_, q, u);
+  } else {
+    for (auto it = tree.qbegin(bgi::nearest(BoxPoint(q.x, q.y), 1)); it != tree.qend(); ++it)
+      search(it->second, q, u);
+  }
+  const double reach = u.distance + 2 * kCandidateReach;
+  const IndexBox around(BoxPoint(q.x - reach, q.y - reach), BoxPoint(q.x + reach, q.y + reach));
+  candidates_.clear();
+  for (auto it = tree.qbegin(bgi::intersects(around)); it != tree.qend(); ++it)
+    if (pieces_[it->second].box.distance_sq(q) <= reach * reach) candidates_.push_back(it->second);
+  std::sort(candidates_.begin(), candidates_.end());
+  centre_ = q;
+  have_candidates_ = true;
+}
+
 ContourFoot ContourDistance::nearest(Vec2 q) const {
   ContourFoot best;
   best.distance = std::numeric_limits<double>::infinity();
   if (pieces_.empty()) return best;
-  const int n = static_cast<int>(pieces_.size());
-  const int first = std::clamp(hint_, 0, n - 1);
-  search(first, q, best);
-  for (int s = 0; s < n; ++s) {
-    if (s == first) continue;
+  if (!have_candidates_ || norm(q - centre_) > kCandidateReach) refresh_candidates(q);
+  search(hint_, q, best);
+  for (int s : candidates_) {
+    if (s == hint_) continue;
     if (pieces_[s].box.distance_sq(q) >= best.distance * best.distance) continue;
     search(s, q, best);
   }

@@ -10,9 +10,15 @@
 // the bracket is narrower than kDistanceAccuracy. The result is therefore certified: the
 // true distance lies in [distance - kDistanceAccuracy, distance], never above the reported
 // value, whatever the curve's shape (no starting guess, no Newton step that can miss a
-// branch). Whole segments are skipped by their bounding boxes, starting from the segment
-// found for the previous query (pulses move one BLU at a time).
+// branch). Which segments to search comes from a spatial index of their bounding boxes
+// (Boost.Geometry's R-tree) and a candidate list kept between queries: around a point q0
+// with an upper bound U of its distance, every segment whose box is within U + 2m of q0 is
+// a candidate; for any q within m of q0 the nearest segment is among them (a segment whose
+// box is farther than U + 2m from q0 is farther than U + m from q, and the nearest is
+// within U + m). Pulses move one BLU at a time, so the list serves about m pulses and a
+// query costs a few exact segment distances whatever the contour's length.
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "geometry/segment.h"
@@ -54,6 +60,10 @@ class ContourDistance {
     Box box;
     Vec2 bezier[4];  // cubic pieces: Bezier control points (u in [0, 1])
   };
+  struct Index;  // the R-tree of the segments' boxes (contour_distance.cpp)
+  void build_pieces();  // pieces_ from segments_
+  // The candidates around q (see above).
+  void refresh_candidates(Vec2 q) const;
   // Updates best with segment s if it is nearer.
   void search(int s, Vec2 q, ContourFoot& best) const;
   void search_cubic(int s, Vec2 q, ContourFoot& best) const;
@@ -61,7 +71,13 @@ class ContourDistance {
 
   std::vector<Segment> segments_;
   std::vector<Piece> pieces_;
-  mutable int hint_ = 0;  // segment of the last answer: a good first upper bound
+  std::shared_ptr<const Index> index_;  // immutable: copies share it
+  // The candidate list: its centre q0, its reach m, the segments; and the segment of the
+  // last answer (a good first upper bound when the list is made again).
+  mutable std::vector<int> candidates_;
+  mutable Vec2 centre_;
+  mutable bool have_candidates_ = false;
+  mutable int hint_ = 0;
 };
 
 using firststage::distance_to_segment;

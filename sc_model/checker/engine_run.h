@@ -8,6 +8,7 @@
 // of the whole struct right after its fields were stored one by one stalls on store
 // forwarding (docs/performance.md).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
 #include "frame_source.h"
@@ -52,6 +53,45 @@ RunEnd run_engine(Engine& engine, FrameSource& source, uint64_t max_cycles, Obse
     last = &current_outputs(engine, read);
     observe(cycle, *last);
     end.cycles = cycle;
+  }
+  end.last = *last;
+  return end;
+}
+
+// The golden model with event jumping: where the model, the reader and the observer all
+// allow it (GoldenInterp::quiet_ticks, FrameSource::steady_clocks, checker.quiet_limit()),
+// the quiet clocks are passed in one step and reported to checker.observe_quiet(); every
+// other clock is ticked and observed as run_engine() does. The same outputs at every
+// clock as run_engine() (tests/sc_model/golden: JumpedRunEqualsClocked).
+template <class Golden, class Checker, class Observer>
+RunEnd run_engine_jumping(Golden& engine, FrameSource& source, uint64_t max_cycles, Checker& checker,
+                          Observer&& observe) {
+  engine.reset();
+  const InterpOutputs* last = &engine.outputs();
+  observe(uint64_t{0}, *last);
+  RunEnd end;
+  for (uint64_t cycle = 1; cycle <= max_cycles && !last->done && !last->error;) {
+    const InterpInputs in = source.inputs();
+    uint64_t n = engine.quiet_ticks(in);
+    if (n > 0) {
+      const uint64_t limit = checker.quiet_limit();
+      n = std::min({n, source.steady_clocks(), max_cycles - cycle + 1,
+                    limit >= cycle ? limit - cycle + 1 : uint64_t{0}});
+    }
+    if (n > 0) {
+      engine.skip(n);
+      source.skip(n);
+      cycle += n;
+      checker.observe_quiet(cycle - 1, *last);
+      end.cycles = cycle - 1;
+      continue;
+    }
+    const bool ready = last->frame_ready;
+    engine.tick(in);
+    source.clock(ready);
+    last = &engine.outputs();
+    observe(cycle, *last);
+    end.cycles = cycle++;
   }
   end.last = *last;
   return end;

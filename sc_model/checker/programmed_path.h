@@ -23,6 +23,7 @@ struct ProgrammedBlock {
   GridPoint start, end;      // absolute, BLU (tape start = (0, 0))
   Vec2 centre;               // arcs: absolute centre, BLU
   bool is_arc() const { return tape::is_arc(tape.motion); }
+  bool is_rapid() const { return tape::is_rapid(tape.motion); }  // G00: a traverse
   // Signed sweep of an arc from start to end (rad, > 0 counter-clockwise); a block whose
   // end equals its start is a full circle.
   double sweep() const;

@@ -78,31 +78,6 @@ TotalError ReferenceContour::measure(Vec2 position) const {
   return e;
 }
 
-bool ReferenceContour::is_rapid(const ProgrammedBlock& block, double tol_blu) const {
-  if (rapids_.empty()) return false;
-  const Vec2 start = to_vec(options_.start);
-  const double samples[] = {0.0, 0.5, 1.0};
-  bool on_cut = true;
-  for (double s : samples) {
-    const Vec2 q = block.point_at(s);
-    const TotalError e = centre_only(q);
-    if (e.error > tol_blu) on_cut = false;
-  }
-  if (on_cut) return false;
-  // The offset re-aims a rapid at the next chain's start, up to sqrt(2) R from the input's
-  // rapid end (a corner of the offset path); + 1 BLU for the grid rounding of the ends.
-  const double reach = tol_blu + 1.5 * radius_ + 1.0;
-  for (const Segment& r : rapids_) {
-    bool along = true;
-    for (double s : samples) {
-      const Vec2 q = start + block.point_at(s);
-      if (distance_to_segment(q, r.start(), r.end()) > reach) along = false;
-    }
-    if (along) return true;
-  }
-  return false;
-}
-
 std::string ReferenceContour::element_name(int segment) const {
   if (segment < 0 || segment >= static_cast<int>(names_.size())) return "";
   return names_[segment];

@@ -9,8 +9,9 @@
 // the centre around the corner outside the equidistant on purpose (the cutter touches both
 // sides to the vertex and leaves the corner sharp): a position whose nearest part point is
 // such a corner vertex and which is farther than R counts as a corner excursion, reported
-// apart, not as error. Rapid moves (G0) are not cut: the blocks that follow one (and do
-// not lie on the cutting contour) get no total error.
+// apart, not as error. Traverses are not cut: the tape says which blocks they are (G00),
+// and the checker measures no total error on them; the input's rapid moves are kept here
+// only to be drawn.
 #pragma once
 #include <string>
 #include <vector>
@@ -40,14 +41,12 @@ class ReferenceContour {
  public:
   ReferenceContour(const firststage::Contour& contour, const ReferenceOptions& options);
 
-  // The programmed cutter path (offset case): the non-rapid blocks, with their bounds.
+  // The programmed cutter path (offset case): the blocks but the traverses (G00), with
+  // their bounds.
   void set_tool_path(const std::vector<ProgrammedBlock>& blocks, const std::vector<bool>& rapid,
                      const std::vector<double>& bounds);
   // Total error of a tool position (relative to the tape start, BLU).
   TotalError measure(Vec2 position) const;
-  // True when a programmed block follows one of the input's rapid moves (G0) and not the
-  // cutting contour: such a block is a traverse, its total error is not measured.
-  bool is_rapid(const ProgrammedBlock& block, double tol_blu) const;
   // Name of the input element a contour segment belongs to ("line 12 (G2)" ...).
   std::string element_name(int segment) const;
   // The cutting and rapid segments in absolute BLU (subtract start() for positions), for plots.

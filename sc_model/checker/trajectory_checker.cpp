@@ -1,6 +1,7 @@
 // Pulse-path monitor (see trajectory_checker.h).
 #include "trajectory_checker.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -23,6 +24,11 @@ double line_bound(int64_t dx, int64_t dy) {
 
 // Slack for comparing a floating distance with a bound (both computed from integers).
 constexpr double kBoundSlack = 1e-9;
+
+// The schedule and duration rules hold for straight blocks: the documented L1 timing, a G01
+// block's at its F, a G00 block's at the machine's rapid step (CheckerOptions::rapid_step).
+// An arc's geometry only is checked (direction, count, bound, endpoint).
+bool timed(const ProgrammedBlock& b) { return !b.is_arc(); }
 
 }  // namespace
 
@@ -87,14 +93,14 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
   for (size_t k = 0; k < blocks_.size(); ++k) {
     const ProgrammedBlock& b = blocks_[k];
     BlockResult& r = results_[k];
-    r.rapid = reference_ && reference_->is_rapid(b, options_.tol_blu);
+    r.rapid = b.is_rapid();  // a G00 block on the tape is a traverse; every other one cuts
     r.bound = b.is_arc() ? options_.arc_bound_blu + std::fabs(norm(to_vec(b.end) - b.centre) -
                                                              norm(to_vec(b.start) - b.centre))
                          : line_bound(b.tape.dx, b.tape.dy);
     r.ideal_clocks = b.tape.feed ? static_cast<double>(options_.feed_modulus) /
                                        static_cast<double>(b.tape.feed)
                                  : 0.0;
-    if (!b.is_arc()) {
+    if (timed(b)) {
       const LineSchedule s = schedule_of(b);
       r.saturated = s.saturated();
       // M 2^k / S: for a G01 block M / F; a G00 block has no F, its S is the rapid step.
@@ -146,7 +152,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   // Block boundaries: a load shows as busy rising or block_n_o changing; two consecutive
   // line blocks with the same N are told apart by the documented block time.
   bool load = prev_.loads(o);
-  if (!load && o.busy && active_ && options_.schedule && !blocks_[cur_].is_arc() &&
+  if (!load && o.busy && active_ && options_.schedule && timed(blocks_[cur_]) &&
       cycle == results_[cur_].load_cycle + schedule_.duration() && cur_ + 1 < blocks_.size() &&
       blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n)
     load = true;
@@ -172,7 +178,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
                    " while the block moves " + axis_name(a) + " by " + std::to_string(d[a]));
     }
     if (pulsed) on_pulse(cycle, step, dir);
-    if (options_.schedule && !b.is_arc()) {
+    if (options_.schedule && timed(b)) {
       check_schedule(cycle, pulsed);
       if (o.feed_saturated != schedule_.saturated())
         report(Rule::kDuration, cycle,
@@ -184,6 +190,22 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }
   prev_.keep(o);
+}
+
+void TrajectoryChecker::observe_quiet(uint64_t cycle, const InterpOutputs& o) {
+  if (loaded_ > 0 && !o.busy && !o.done && !o.error) gap_clocks_ += cycle - last_cycle_;
+  last_cycle_ = cycle;
+}
+
+uint64_t TrajectoryChecker::quiet_limit() const {
+  if (!active_ || !options_.schedule || !timed(blocks_[cur_])) return UINT64_MAX;
+  const uint64_t load = results_[cur_].load_cycle;
+  uint64_t next = load + schedule_.duration();  // the same-N load rule looks at this clock
+  if (iterations_ < schedule_.iterations()) {
+    const uint64_t edge = schedule_.iteration_edge(iterations_ + 1);
+    if (edge != UINT64_MAX) next = std::min(next, load + edge);
+  }
+  return next - 1;
 }
 
 void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
@@ -204,10 +226,10 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
   expected_dir_[0] = b.is_arc() ? b.tape.dx > 0 : b.tape.dx >= 0;
   expected_dir_[1] = b.is_arc() ? b.tape.dy > 0 : b.tape.dy >= 0;
   iterations_ = 0;
-  if (!b.is_arc())
+  if (timed(b))
     schedule_ = schedule_of(b);
   else
-    r.saturated = o.feed_saturated;  // S = F N needs the dry run's N: the engine's word
+    r.saturated = o.feed_saturated;  // an arc's S = F N needs the dry run's N: the engine's word
   if (o.block_n != b.tape.n)
     report(Rule::kSequence, cycle,
            "block_n_o = " + std::to_string(o.block_n) + " at the load of tape block " +
@@ -228,7 +250,7 @@ void TrajectoryChecker::end_block(uint64_t cycle) {
                  std::to_string(d[a] >= 0 ? progress_[a] : -progress_[a]) + " BLU, programmed " +
                  std::to_string(d[a]));
   }
-  if (options_.schedule && !b.is_arc() && r.clocks != schedule_.duration())
+  if (options_.schedule && timed(b) && r.clocks != schedule_.duration())
     report(Rule::kDuration, cycle,
            "block took " + std::to_string(r.clocks) + " clocks, documented " +
                std::to_string(schedule_.duration()));

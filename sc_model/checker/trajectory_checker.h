@@ -9,12 +9,12 @@
 //   direction while a block plays, dir_*_o is the sign of its increment (1 for 0 on a
 //             line, as section 5.1 says) and every pulse goes that way;
 //   count     an axis never emits more pulses than its increment;
-//   schedule  (line blocks) the pulse count of each axis equals the documented DDA count
+//   schedule  (G01 blocks) the pulse count of each axis equals the documented DDA count
 //             for the iterations due by this clock (line_schedule.h): a lost, extra, early
 //             or late pulse is reported at the clock where it happens;
 //   bound     each pulse position is within the interpolator's bound of the block's path;
 //   endpoint  at the block's end each axis has emitted exactly its increment;
-//   duration  (line blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
+//   duration  (G01 blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
 //             and feed_saturated_o says whether F << k >= M;
 //   sequence  blocks load in tape order, block_n_o showing each block's N;
 //   complete  the run reaches the end of program with every block played.
@@ -72,7 +72,7 @@ struct ErrorStat {
 struct BlockResult {
   bool played = false;     // loaded
   bool finished = false;   // ended (next load or busy falling)
-  bool rapid = false;      // a traverse: no total error
+  bool rapid = false;      // a G00 block: a traverse, no total error
   uint64_t load_cycle = 0, end_cycle = 0;
   uint64_t pulses[2] = {0, 0};
   ErrorStat path;          // distance to the programmed block
@@ -106,7 +106,6 @@ struct CheckerOptions {
   // linearly from R0 to R1: arc_bound_blu + |R1 - R0| (docs/circle-dda.md 3.2: 0.88 BLU,
   // measured on every good arc up to W = 7 and 100000 random arcs at W = 16).
   double arc_bound_blu = kCircleDdaBound;
-  double tol_blu = 10.0;       // delta, for telling rapid traverses from cutting blocks
   bool keep_pulses = true;     // record every pulse (plots, error along the path)
   size_t max_violations = 1000;  // details kept; all are counted
 };
@@ -120,6 +119,13 @@ class TrajectoryChecker {
 
   // The outputs after reset (cycle 0), then after every clock edge, in order.
   void observe(uint64_t cycle, const InterpOutputs& o);
+  // Event jumping (engine_run.h): the clocks after the last observed one up to `cycle`
+  // had the outputs last observed (o), with no step: what observe() would do for each of
+  // them. quiet_limit(): the last cycle that may be passed so; a clock the checker must
+  // see by itself (an iteration edge or the end of a G01 block by the documented timing)
+  // comes after it.
+  void observe_quiet(uint64_t cycle, const InterpOutputs& o);
+  uint64_t quiet_limit() const;
   // End of the run, with the last outputs observed: the complete rule, an engine's tape
   // error. (The checker keeps per clock only what the next clock needs, not a copy of
   // the outputs: see engine_run.h.)

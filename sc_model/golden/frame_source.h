@@ -46,6 +46,16 @@ class FrameSource {
     }
   }
 
+  // Event jumping (GoldenInterp::quiet_ticks): the clocks from now during which inputs()
+  // stays as it is while no frame is taken: the wait for the next frame, or (0 clocks
+  // left) a frame waiting under the head; skip(n), n <= that, is n such clocks.
+  uint64_t steady_clocks() const {
+    return next_ < frames_.size() && countdown_ > 0 ? countdown_ : UINT64_MAX;
+  }
+  void skip(uint64_t n) {
+    if (next_ < frames_.size() && countdown_ > 0) countdown_ -= n;
+  }
+
   uint64_t frames_taken() const { return next_; }
   const std::vector<uint8_t>& frames() const { return frames_; }
 

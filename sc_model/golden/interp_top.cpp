@@ -4,6 +4,8 @@
 
 #include "bit_length.h"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -57,6 +59,37 @@ void GoldenInterp::reset() {
   loads_ = 0;
   fault_active_ = false;
   fault_cycle_ = fault_.kind == Fault::kNone ? std::numeric_limits<uint64_t>::max() : fault_.cycle;
+}
+
+uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
+  using State = GoldenTapeDecoder::State;
+  if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
+  const bool busy = out_.busy;
+  const bool buffer_empty = !next_valid_;
+  if (busy && player_done_) return 0;       // the block ends: a load, or busy falls
+  if (!busy && !buffer_empty) return 0;     // a load (or the RAM read before it)
+  const State dstate = decoder_.state();
+  if (!busy && buffer_empty &&
+      ((dstate == State::kError && !out_.error) || (dstate == State::kEnd && decoder_.tape_ended() && !out_.done)))
+    return 0;                               // status_edge() raises error or done
+  if (!decoder_.quiet(in, buffer_empty)) return 0;
+  uint64_t n = std::numeric_limits<uint64_t>::max();
+  if (fault_cycle_ != std::numeric_limits<uint64_t>::max())
+    n = fault_cycle_ > cycle_ + 1 ? fault_cycle_ - cycle_ - 1 : 0;  // fault_edge() at fault_cycle_
+  if (busy) {
+    if (saturated_ || player_running_) return 0;  // a strobe every edge, or a serial pass
+    // The feed generator strobes at the first edge j with phase + j S >= M (phase < M).
+    if (feed_step_ > 0) {
+      const uint64_t first_strobe = (modulus_ - phase_ + feed_step_ - 1) / feed_step_;
+      n = std::min(n, first_strobe - 1);
+    }
+  }
+  return n;
+}
+
+void GoldenInterp::skip(uint64_t n) {
+  cycle_ += n;
+  if (out_.busy && !player_done_ && !saturated_) phase_ += n * feed_step_;  // < M: no strobe
 }
 
 void GoldenInterp::load_block() {

@@ -40,6 +40,14 @@ class GoldenInterp {
   // One rising clock edge with these inputs.
   inline void tick(const InterpInputs& in);
 
+  // Event jumping (used by `ncinterp check`; docs/verification.md 7). quiet_ticks(in): how
+  // many of the next edges, with `in` held, change nothing but the feed phase and the cycle
+  // count (the outputs stay as they are): 0 when the next edge does more (a strobe, a
+  // pulse to clear, a load, the decoder, a status, the fault hook). skip(n), n <= that
+  // count, leaves exactly the state of n calls of tick(in). Cosim and play tick every clock.
+  uint64_t quiet_ticks(const InterpInputs& in) const;
+  void skip(uint64_t n);
+
   const InterpOutputs& outputs() const { return out_; }
   const InterpConfig& config() const { return cfg_; }
   uint64_t cycle() const { return cycle_; }

@@ -29,6 +29,11 @@ class Engine {
   virtual void tick(const InterpInputs& in) = 0;
   // The outputs after the last edge.
   virtual const InterpOutputs& outputs() const = 0;
+  // Event jumping (GoldenInterp::quiet_ticks): how many next edges with `in` held change
+  // nothing but internal counters, and skip(n) for n of them. An engine that cannot tell
+  // says 0 (the verilated RTL: it is clocked every edge).
+  virtual uint64_t quiet_ticks(const InterpInputs&) const { return 0; }
+  virtual void skip(uint64_t) {}
   // Starts writing a VCD to `path` now, half a clock before the next edge; every edge from
   // then on is in it. The golden engine traces the system's wave signals, which the system
   // drives clock by clock while a VCD is open.

@@ -18,6 +18,8 @@ class GoldenEngine : public Engine {
   void reset() override { model_.reset(); }
   void tick(const InterpInputs& in) override { model_.tick(in); }
   const InterpOutputs& outputs() const override { return model_.outputs(); }
+  uint64_t quiet_ticks(const InterpInputs& in) const override { return model_.quiet_ticks(in); }
+  void skip(uint64_t n) override { model_.skip(n); }
 
   void open_vcd(const std::string& path) override {
     close_vcd();

@@ -91,6 +91,15 @@ void PlayMonitor::observe(uint64_t cycle, const InterpOutputs& o) {
   }
 }
 
+void PlayMonitor::observe_quiet(uint64_t cycle, const InterpOutputs& o) {
+  const uint64_t n = cycle - s_.cycles;
+  s_.cycles = cycle;
+  if (o.busy)
+    s_.busy_cycles += n;
+  else if (!o.done && !o.error)
+    (started_ ? s_.gap_cycles : s_.lead_in_cycles) += n;
+}
+
 void PlayMonitor::pulse(int64_t x, int64_t y) {
   const auto& blocks = program_.blocks;
   while (cursor_ < blocks.size() && cursor_pulses_ >= block_pulses(blocks[cursor_])) {

@@ -76,6 +76,9 @@ class PlayMonitor {
 
   // The outputs after edge `cycle` (0 = after reset). Call once per clock, in order.
   void observe(uint64_t cycle, const InterpOutputs& o);
+  // The clocks after the last observed one up to `cycle` showed o, the outputs last
+  // observed, with no step (event jumping, system_top.h): what observe() does for each.
+  void observe_quiet(uint64_t cycle, const InterpOutputs& o);
   // Closes the last block and matches the observed blocks to the tape's blocks; `last` is
   // the outputs last observed (their final state, error and position go in the summary).
   PlaySummary finish(const InterpOutputs& last);

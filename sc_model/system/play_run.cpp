@@ -86,6 +86,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   setup.engine = opt.engine;
   setup.clock_hz = opt.clock_hz;
   setup.max_cycles = r.max_cycles;
+  setup.every_clock = opt.every_clock;
   r.vcd_path = opt.vcd_path;
   if (!opt.vcd_path.empty()) {
     r.vcd_window = resolve_vcd_window(opt.vcd_from, opt.vcd_to, frames, r.config,

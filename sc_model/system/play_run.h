@@ -30,6 +30,7 @@ struct PlayOptions {
   AtomicOutputFile* vcd_file = nullptr;
   std::optional<VcdBound> vcd_from, vcd_to;
   uint64_t max_cycles = 0;   // 0: a safe bound computed from the tape
+  bool every_clock = false;  // golden engine: no event jumping (SystemSetup::every_clock)
   std::function<void(uint64_t cycle, size_t blocks_done, size_t blocks)> progress;
   // Called once before the simulation when a VCD is asked for, with its estimated size
   // (vcd_size_estimate): the CLI warns about a large file before writing it.

@@ -1,6 +1,8 @@
 // The SystemC system (see system_top.h).
 #include "system_top.h"
 
+#include <algorithm>
+
 #include "vcd_time_base.h"
 
 namespace ncinterp::system {
@@ -66,6 +68,14 @@ void SystemTop::run() {
     const bool more = falling_edge();  // may open or close the window at this fall
     if (vcd_open_) drive_waves(false);
     if (!more) break;
+    if (const uint64_t n = quiet_clocks()) {
+      engine_->skip(n);
+      source_.skip(n);
+      cycle_ += n;
+      monitor_.observe_quiet(cycle_, engine_->outputs());
+      if (setup_.progress && cycle_ / setup_.progress_every != (cycle_ - n) / setup_.progress_every)
+        setup_.progress(cycle_, monitor_.pulse_block());
+    }
     // The next rising edge: the engine sees the reader's inputs from before it, the reader
     // the engine's frame_ready from before it.
     const bool ready = engine_->outputs().frame_ready;
@@ -76,6 +86,19 @@ void SystemTop::run() {
   }
   catch_up();
   sc_core::sc_stop();
+}
+
+uint64_t SystemTop::quiet_clocks() const {
+  if (setup_.every_clock || vcd_open_) return 0;
+  uint64_t n = engine_->quiet_ticks(source_.inputs());
+  if (n == 0) return 0;
+  n = std::min(n, source_.steady_clocks());
+  // Leave the last clock before the limit, and the fall before a VCD window opens, to
+  // falling_edge().
+  n = std::min(n, setup_.max_cycles > cycle_ + 1 ? setup_.max_cycles - cycle_ - 1 : 0);
+  if (!setup_.vcd_path.empty() && !vcd_closed_)
+    n = std::min(n, setup_.vcd_window.from > cycle_ + 2 ? setup_.vcd_window.from - cycle_ - 2 : 0);
+  return n;
 }
 
 bool SystemTop::falling_edge() {

@@ -34,6 +34,10 @@ struct SystemSetup {
   CycleWindow vcd_window;
   uint64_t max_cycles = 0;
   uint64_t progress_every = 1 << 16;  // cycles between progress calls
+  // Tick every clock; otherwise the clocks where the golden engine changes nothing but its
+  // feed phase and the reader waits are passed in one step outside a VCD window (the
+  // monitor sees the same outputs: PlayMonitor::observe_quiet).
+  bool every_clock = false;
   std::function<void(uint64_t cycle, size_t blocks_done)> progress;
 };
 
@@ -58,6 +62,8 @@ class SystemTop : public sc_core::sc_module {
   void run();
   // The work at the falling edge after edge cycle_; false when the run is over.
   bool falling_edge();
+  // The quiet clocks after edge cycle_ that can be passed in one step (0: tick the next).
+  uint64_t quiet_clocks() const;
   // Brings SystemC time to the falling edge after edge cycle_ (outside a VCD window it
   // lags behind the clocks).
   void catch_up();

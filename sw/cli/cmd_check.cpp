@@ -42,6 +42,7 @@ struct CheckArgs {
   std::vector<double> start;
   double airfoil_chord_mm = 100.0;
   double cut_z_mm = std::numeric_limits<double>::quiet_NaN();
+  bool every_clock = false;
 };
 
 unsigned frac_digits_for(double blu_mm) {
@@ -73,6 +74,7 @@ int run(const CheckArgs& a) {
   setup.cutter_left = a.side == "left";
   if (!a.start.empty()) setup.start_mm = firststage::Vec2{a.start[0], a.start[1]};
   setup.keep_pulses = !a.svg.empty();
+  setup.every_clock = a.every_clock;
   Progress progress("check");
   if (progress.enabled()) {
     setup.progress = [&progress](uint64_t cycle, uint64_t budget) {
@@ -150,6 +152,9 @@ CommandRegistration registration("check", [](CLI::App& app) {
   cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm (as given to `tape`)")
       ->capture_default_str();
   cmd->add_option("--cut-z", args->cut_z_mm, "G-code contour with Z: the cutting depth, mm (as given to `tape`)");
+  cmd->add_flag("--every-clock", args->every_clock,
+                "golden engine: tick every clock instead of passing the clocks where only the "
+                "feed phase and the reader's wait advance in one step (same verdict and report, slower)");
   cmd->callback([args]() {
     int code = 0;
     try {

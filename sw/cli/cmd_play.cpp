@@ -36,6 +36,7 @@ struct PlayArgs {
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
   uint64_t max_cycles = 0;
+  bool every_clock = false;
 };
 
 int run(const PlayArgs& a) {
@@ -62,6 +63,7 @@ int run(const PlayArgs& a) {
                  a.vcd.c_str(), static_cast<unsigned long long>(cycles), static_cast<double>(bytes) / 1e6);
   };
   opt.max_cycles = a.max_cycles;
+  opt.every_clock = a.every_clock;
   if (!a.vcd_from.empty()) opt.vcd_from = parse_vcd_bound(a.vcd_from);
   if (!a.vcd_to.empty()) opt.vcd_to = parse_vcd_bound(a.vcd_to);
   if ((opt.vcd_from || opt.vcd_to) && a.vcd.empty())
@@ -136,6 +138,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--clock-hz", args->clock_hz, "Interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "Tape reader speed, characters per second")
       ->capture_default_str();
+  cmd->add_flag("--every-clock", args->every_clock,
+                "golden engine: tick every clock instead of passing the clocks where only the feed "
+                "phase and the reader's wait advance in one step (the same report, slower)");
   cmd->add_option("--max-cycles", args->max_cycles,
                   "Stop (as an error) after this many cycles; 0 = a bound from the tape")
       ->capture_default_str();

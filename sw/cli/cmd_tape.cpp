@@ -1,7 +1,8 @@
 // `ncinterp tape INPUT -o OUT.tape`: the first stage (sw/host/firststage, docs/first-stage.md).
-// Reads a contour (.json contour or reference-point table, .nc/.ngc/.gcode G-code, .dat
+// Reads a contour (.json contour or reference-point table, .nc/.ngc/.gcode/.tap G-code, .dat
 // airfoil), replaces it by chords within --tol (Tamm's method 1, 2 or 3) or quadrant arc
-// blocks, offsets it for the cutter, rounds it to the BLU grid and writes the tape.
+// blocks, offsets it for the cutter, rounds it to the BLU grid and writes the tape:
+// traverses as G00 blocks, a G-code program's cutting depths as one pass each.
 // Idea: everything is built and checked in memory first (the tape text is read back with
 // the project's own tape reader, the deviation of the chord path from the contour is
 // measured), then each output is written atomically; a failure leaves no file behind.
@@ -65,6 +66,50 @@ std::string board_refusal(const board::Board& b, const FirstStageOptions& o) {
   return "";
 }
 
+// Per cutting pass: its depth, its blocks (traverses included) and the length cut and
+// traversed. A move belongs to the pass of its input element; the offset's joins (element
+// -1) to the pass of the move before them.
+struct PassFigures {
+  double depth_mm = 0.0;
+  long blocks = 0, traverse_blocks = 0;
+  long first_block = 0;  // N of the pass's first block (0: none)
+  double cut_mm = 0.0, traverse_mm = 0.0;
+};
+
+std::vector<PassFigures> pass_figures(const Contour& c, const FirstStageResult& res, double blu_mm) {
+  std::vector<CutPass> passes = c.passes;
+  if (passes.empty())
+    passes.push_back({std::numeric_limits<double>::quiet_NaN(), 0, static_cast<int>(c.element_names.size())});
+  std::vector<PassFigures> out(passes.size());
+  for (size_t p = 0; p < passes.size(); ++p) out[p].depth_mm = passes[p].depth_mm;
+  size_t p = 0;
+  GridPoint cur = res.start;
+  long n = 0;
+  for (const Move& m : res.moves) {
+    ++n;
+    if (m.element >= 0)
+      while (p + 1 < passes.size() && m.element >= passes[p].end_element) ++p;
+    PassFigures& f = out[p];
+    if (f.blocks++ == 0) f.first_block = n;
+    const double len = move_length_mm(cur, m, blu_mm);
+    if (m.rapid) {
+      ++f.traverse_blocks;
+      f.traverse_mm += len;
+    } else {
+      f.cut_mm += len;
+    }
+    cur = m.to;
+  }
+  return out;
+}
+
+std::string depth_text(double depth_mm) {
+  if (std::isnan(depth_mm)) return "no Z";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "Z%g", depth_mm);
+  return buf;
+}
+
 int run(TapeArgs a) {
   FirstStageOptions& o = a.options;
   o.arcs_circle = a.arcs == "circle";
@@ -110,11 +155,21 @@ int run(TapeArgs a) {
 
   // Blocks by kind, so the summary adds up: chord blocks of curves, straight blocks
   // (programmed lines, rapids, the offset's joins), quadrant arc blocks.
-  long lines = 0, arcs = 0, chords = 0, chord_blocks = 0;
+  long lines = 0, arcs = 0, chords = 0, chord_blocks = 0, traverses = 0;
   for (const Move& m : res.moves) {
     (m.kind == MoveKind::kLine ? lines : arcs) += 1;
     if (m.kind == MoveKind::kLine && m.chord) ++chord_blocks;
+    if (m.rapid) ++traverses;
   }
+  const std::vector<PassFigures> passes = pass_figures(contour, res, o.blu_mm);
+  nlohmann::json pass_list = nlohmann::json::array();
+  for (const PassFigures& f : passes)
+    pass_list.push_back({{"depth_mm", std::isnan(f.depth_mm) ? nlohmann::json() : nlohmann::json(f.depth_mm)},
+                         {"blocks", f.blocks},
+                         {"traverse_blocks", f.traverse_blocks},
+                         {"first_block", f.first_block},
+                         {"cut_mm", f.cut_mm},
+                         {"traverse_mm", f.traverse_mm}});
   nlohmann::json per_element = nlohmann::json::array();
   for (size_t i = 0; i < res.chords_per_element.size(); ++i) {
     chords += res.chords_per_element[i];
@@ -140,6 +195,8 @@ int run(TapeArgs a) {
       {"blocks", program.blocks.size()},
       {"line_blocks", lines},
       {"arc_blocks", arcs},
+      {"traverse_blocks", traverses},
+      {"passes", pass_list},
       {"chords", chords},
       {"chords_per_element", per_element},
       {"max_deviation_mm", dev.max_mm},
@@ -180,12 +237,19 @@ int run(TapeArgs a) {
   if (report_out) OutputSet::write(report_out, report.dump(2) + "\n");
   outputs.commit();
   // The summary goes to stderr when the tape itself goes to standard output.
-  std::fprintf(a.output == "-" ? stderr : stdout,
-               "%s: %zu blocks (%ld chords, %ld straight, %ld arc blocks), %zu frames, max "
-               "deviation %.4f mm sampled every %g mm (tol %g mm; `check` measures exactly)\n",
-               a.output.c_str(), program.blocks.size(), chord_blocks, lines - chord_blocks, arcs,
-               frames.size(), dev.max_mm, o.tol_mm / 4, o.tol_mm);
-  if (!a.report.empty()) std::fprintf(a.output == "-" ? stderr : stdout, "report: %s\n", a.report.c_str());
+  FILE* summary = a.output == "-" ? stderr : stdout;
+  std::fprintf(summary,
+               "%s: %zu blocks (%ld chords, %ld straight, %ld arc blocks, %ld traverses G00), %zu "
+               "frames, max deviation %.4f mm sampled every %g mm (tol %g mm; `check` measures "
+               "exactly)\n",
+               a.output.c_str(), program.blocks.size(), chord_blocks, lines - chord_blocks - traverses,
+               arcs, traverses, frames.size(), dev.max_mm, o.tol_mm / 4, o.tol_mm);
+  if (passes.size() > 1 || !std::isnan(passes.front().depth_mm))
+    for (size_t p = 0; p < passes.size(); ++p)
+      std::fprintf(summary, "  pass %zu at %s: %ld blocks from N%ld (%ld traverses), %.3f mm cut, %.3f mm traversed\n",
+                   p + 1, depth_text(passes[p].depth_mm).c_str(), passes[p].blocks, passes[p].first_block,
+                   passes[p].traverse_blocks, passes[p].cut_mm, passes[p].traverse_mm);
+  if (!a.report.empty()) std::fprintf(summary, "report: %s\n", a.report.c_str());
   return 0;
 }
 
@@ -194,7 +258,7 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
   FirstStageOptions& o = args->options;
   CLI::App* cmd = app.add_subcommand("tape", "First stage: contour -> chords within --tol -> tape");
   cmd->add_option("INPUT", args->input,
-                  "contour: .json (segments or reference-point table), .nc/.ngc/.gcode (G-code), "
+                  "contour: .json (segments or reference-point table), .nc/.ngc/.gcode/.tap (G-code), "
                   ".dat (airfoil, Selig or Lednicer)")
       ->required();
   cmd->add_option("-o,--output", args->output, "tape: .tape (frames with parity) or .nc (plain text)")
@@ -223,8 +287,8 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
   cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm")
       ->capture_default_str();
   cmd->add_option("--cut-z", args->cut_z_mm,
-                  "G-code with Z: XY moves at or below this Z are the cut, the rest traverses, mm "
-                  "(default: the lowest Z of the program)");
+                  "G-code with Z: tape only the pass at this depth, mm; the feed moves at other "
+                  "depths become traverses (default: one pass per depth, shallowest first)");
   cmd->add_option("--report", args->report, "write a JSON report");
   cmd->add_option("--board", args->board,
                   "the tape is for this board (icestick: lines only; icebreaker): refused, with the "

@@ -69,7 +69,7 @@ TEST_P(TapeCliExamples, EveryMethodAndArcModeMakesAPlayableTape) {
       for (const tape::Block& b : p.blocks) {
         x += b.dx;
         y += b.dy;
-        has_arcs |= b.motion != tape::Motion::kLine;
+        has_arcs |= tape::is_arc(b.motion);
       }
       EXPECT_EQ(x, end_x);
       EXPECT_EQ(y, end_y);
@@ -195,7 +195,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"word.nc", "%\nG21 G90\nG1 X10 Y0 F100\nG1 X10 Y\n", "4: word Y needs a number"},
         BadCase{"comp.ngc", "G21\nG0 X0 Y0\nG41 D1 G1 X10 Y0\n", "3: G41: cutter compensation"},
         BadCase{"plane.gcode", "G18\nG1 X1 Y1\n", "1: G18: only the XY plane"},
-        BadCase{"arcr.nc", "G1 X0 Y0\nG2 X10 Y0 R2\n", "2: arc radius R2 is shorter"},
+        BadCase{"sub.tap", "G21\no100 sub\n", "2: O-word 'o100 sub' (a subroutine)"},
+        BadCase{"arcr.nc", "G1 X0 Y0\nG2 X10 Y0 R2\n", "2: arc radius R2 is 3 mm shorter than half the distance"},
         BadCase{"num.dat", "AIRFOIL\n1.0 0.0\n0.5 0.05\n0.0 0.0\n0.5 abc\n1.0 0.0\n", "5: 'abc' is not a number"},
         BadCase{"lednicer.dat", "AIRFOIL\n3. 3.\n\n0 0\n0.5 0.05\n1 0\n\n0 0\n0.5 -0.05\n", "9: Lednicer header announces 3 + 3 points"},
         // A count beyond any integer (the airfoil fuzzer; UBSan before the fix).
@@ -274,16 +275,99 @@ TEST_F(TapeCli, DashAndDevNullAreStreamed) {
   EXPECT_TRUE(files().empty());
 }
 
-TEST_F(TapeCli, CamPostsMakeATapeWithOneWarningLineAndPassTheCheck) {
-  for (const char* name : {"fusion360_profile.nc", "freecad_profile.ngc", "estlcam_profile.nc"}) {
-    SCOPED_TRACE(name);
-    const std::string input = kExamples + "/cam/" + name;
-    ASSERT_EQ(run("tape " + input + " -o " + path("t.tape")), 0) << stderr_;
-    EXPECT_EQ(stderr_.rfind(input + ": warning: ignored, no meaning for the 2-D contour: ", 0), 0u) << stderr_;
-    EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
-    ASSERT_EQ(run("check " + path("t.tape") + " --contour " + input + " --reader-cps 100000"), 0)
-        << stdout_ << stderr_;
+// Every CAM-style file a 2-axis machine can cut (examples/contours/cam/): taped with its
+// warnings (ignored words; feed moves taped as traverses; words after the end), one pass per
+// depth in the report, traverses as G00 blocks; and `check` passes on the tape.
+struct CamFile {
+  const char* name;
+  int warnings;  // warning lines on stderr
+  int passes;
+};
+
+void PrintTo(const CamFile& k, std::ostream* os) { *os << k.name; }
+
+class TapeCliCam : public TapeCli, public ::testing::WithParamInterface<CamFile> {};
+
+TEST_P(TapeCliCam, TapesAndPassesTheCheck) {
+  const CamFile& k = GetParam();
+  const std::string input = kExamples + "/cam/" + k.name;
+  ASSERT_EQ(run("tape " + input + " -o " + path("t.tape") + " --report " + path("r.json")), 0) << stderr_;
+  EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), k.warnings) << stderr_;
+  size_t at = 0;
+  for (int w = 0; w < k.warnings; ++w, at = stderr_.find('\n', at) + 1)
+    EXPECT_EQ(stderr_.compare(at, input.size() + 11, input + ": warning: "), 0) << stderr_;
+  const nlohmann::json r = json_of(path("r.json"));
+  ASSERT_EQ(r["passes"].size(), static_cast<size_t>(k.passes)) << r["passes"].dump();
+  long blocks = 0, traverses = 0;
+  for (const auto& p : r["passes"]) {
+    blocks += p["blocks"].get<long>();
+    traverses += p["traverse_blocks"].get<long>();
+    EXPECT_GT(p["cut_mm"].get<double>(), 0.0);
   }
+  EXPECT_EQ(blocks, r["blocks"].get<long>());
+  EXPECT_EQ(traverses, r["traverse_blocks"].get<long>());
+  const tape::Program prog = tape::parse_frames(tape::load_frames(path("t.tape")), tape::Format{});
+  long g00 = 0;
+  for (const tape::Block& b : prog.blocks) g00 += tape::is_rapid(b.motion);
+  EXPECT_EQ(g00, traverses);
+  EXPECT_GT(g00, 0);
+  ASSERT_EQ(run("check " + path("t.tape") + " --contour " + input + " --reader-cps 100000 --report " +
+                path("c.json")), 0) << stdout_ << stderr_;
+  const nlohmann::json c = json_of(path("c.json"));
+  EXPECT_EQ(c["status"], "pass");
+  EXPECT_LE(c["total_error"]["max_mm"].get<double>(), 0.01);
+  EXPECT_EQ(c["total_error"]["rapid_blocks"].get<long>(), traverses);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cam, TapeCliCam,
+    ::testing::Values(CamFile{"fusion360_profile.nc", 1, 2}, CamFile{"freecad_profile.ngc", 1, 1},
+                      CamFile{"estlcam_profile.nc", 2, 1}, CamFile{"depth_passes_minimal.nc", 0, 2},
+                      CamFile{"fusion360_passes_tabs.nc", 2, 3}, CamFile{"freecad_grbl_disc.gcode", 2, 2},
+                      CamFile{"estlcam_bolt_holes.nc", 2, 2}, CamFile{"pcb_gcode_etch.tap", 1, 1},
+                      CamFile{"plasma_mach3_flange.tap", 1, 1}, CamFile{"laser_lightburn.gcode", 1, 1},
+                      CamFile{"linuxcnc_inch_r_arcs.ngc", 2, 1}),
+    [](const auto& info) { return test_name_of(info.param.name); });
+
+// The CAM-style files that cannot be taped: one line naming the file, the line and the
+// reason (with what to change in the post), exit 1, no output.
+TEST_F(TapeCli, CamRefusalsNameFileLineAndReason) {
+  const std::string dir = kExamples + "/cam/refused/";
+  const std::pair<const char*, const char*> cases[] = {
+      {"fusion360_vertical_leadin.nc", ":17: G18: only the XY plane (G17) is supported"},
+      {"linuxcnc_subroutine.ngc", ":3: O-word 'o100 sub' (a subroutine) is not supported"},
+      {"plasmac_parameters.ngc", ":4: word F at column 1 takes a parameter"},
+      {"router_vfd_header.nc", ":1: '%' line with text ('% vfd enable')"},
+  };
+  for (const auto& [file, says] : cases) {
+    SCOPED_TRACE(file);
+    EXPECT_EQ(run("tape " + dir + file + " -o " + path("t.tape") + " --report " + path("r.json")), 1);
+    EXPECT_EQ(stderr_.rfind(dir + file + says, 0), 0u) << stderr_;
+    EXPECT_EQ(std::count(stderr_.begin(), stderr_.end(), '\n'), 1) << stderr_;
+    EXPECT_TRUE(files().empty());
+  }
+}
+
+// The minimal case: `tape` wrote 0.0000 mm and `check` failed by 10 mm, measuring
+// the traverses along the finished line as cuts. The traverses are G00 now.
+TEST_F(TapeCli, TwoDepthsWithTabsPassTheCheck) {
+  write("tabs.nc", "G21 G90\nG0 Z5\nG0 X0 Y0\nG1 Z-1 F100\nG1 X60\nG1 Z-2\nG1 X55\nG1 Z-1\nG1 X35\n"
+                   "G1 Z-2\nG1 X0\nG0 Z5\nM2\n");
+  ASSERT_EQ(run("tape " + path("tabs.nc") + " -o " + path("t.nc")), 0) << stderr_;
+  EXPECT_EQ(slurp(path("t.nc")),
+            "%\nG17 G21 G91 G93\n"
+            "N1 G01 X60.000 Y0.000 F16.666\n"
+            "N2 G00 X-5.000 Y0.000\n"
+            "N3 G01 X-20.000 Y0.000 F50.000\n"
+            "N4 G00 X25.000 Y0.000\n"
+            "N5 G01 X-5.000 Y0.000 F200.000\n"
+            "N6 G00 X-20.000 Y0.000\n"
+            "N7 G01 X-35.000 Y0.000 F28.571\n"
+            "M02\n%\n");
+  EXPECT_NE(stdout_.find("pass 1 at Z-1: 3 blocks from N1 (1 traverses), 80.000 mm cut"), std::string::npos) << stdout_;
+  EXPECT_NE(stdout_.find("pass 2 at Z-2: 4 blocks from N4 (2 traverses), 40.000 mm cut"), std::string::npos) << stdout_;
+  ASSERT_EQ(run("check " + path("t.nc") + " --contour " + path("tabs.nc") + " --reader-cps 100000"), 0)
+      << stdout_ << stderr_;
 }
 
 TEST_F(TapeCli, PointBeyondThePositionCounterIsRefusedBeforeTheWork) {

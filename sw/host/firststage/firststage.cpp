@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -82,15 +83,86 @@ std::string element_name(const Contour& c, const Move& m) {
              : std::string("a join of the offset");
 }
 
-// A crossing of the contour's own path, else of the cutter path: a warning, not an error
-// (docs/first-stage.md, "Self-crossing paths").
+// The moves with those of every pass but `pass` turned into traverses: the passes of a
+// G-code program are cut one after the other (at their own depths), so only the moves of
+// one pass can cross each other. A move belongs to the pass of its element; the offset's
+// joins (element -1) to the pass of the move before them.
+std::vector<Move> pass_moves(const Contour& c, const std::vector<Move>& moves, size_t pass) {
+  std::vector<Move> out = moves;
+  if (c.passes.size() < 2) return out;
+  size_t p = 0;
+  for (Move& m : out) {
+    if (m.element >= 0) {
+      p = 0;
+      while (p + 1 < c.passes.size() && m.element >= c.passes[p].end_element) ++p;
+    }
+    if (p != pass) m.rapid = true;
+  }
+  return out;
+}
+
+// Pairs of input elements that touch where the contour comes back to a point: a CAM
+// program's lead-in ends where its lead-out starts, both tangent to the profile there, and
+// the chords of such paths cross within a chord's length of the point, where the path
+// touches itself without crossing over. Crossings of two such elements are not reported.
+class Touching {
+ public:
+  Touching(const Contour& c, double to_blu) {
+    using P = std::pair<int64_t, int64_t>;
+    const auto grid = [to_blu](Vec2 v) {
+      const GridPoint g = round_to_grid(to_blu * v);
+      return P{g.x, g.y};
+    };
+    ends_.assign(c.element_names.size(), {P{INT64_MIN, INT64_MIN}, P{INT64_MIN, INT64_MIN}});
+    std::vector<bool> seen(c.element_names.size(), false);
+    std::vector<P> visits;
+    for (const Segment& s : c.segments) {
+      visits.push_back(grid(s.start()));
+      if (s.source_index < 0 || s.source_index >= static_cast<int>(ends_.size())) continue;
+      if (!seen[s.source_index]) ends_[s.source_index].first = grid(s.start());
+      seen[s.source_index] = true;
+      ends_[s.source_index].second = grid(s.end());
+    }
+    std::sort(visits.begin(), visits.end());
+    for (size_t i = 1; i < visits.size(); ++i)
+      if (visits[i] == visits[i - 1]) twice_.push_back(visits[i]);
+  }
+  bool operator()(int ea, int eb) const {
+    if (ea < 0 || eb < 0 || ea == eb || ea >= static_cast<int>(ends_.size()) || eb >= static_cast<int>(ends_.size()))
+      return false;
+    for (const auto& p : {ends_[ea].first, ends_[ea].second})
+      if ((p == ends_[eb].first || p == ends_[eb].second) &&
+          std::binary_search(twice_.begin(), twice_.end(), p))
+        return true;
+    return false;
+  }
+
+ private:
+  std::vector<std::pair<std::pair<int64_t, int64_t>, std::pair<int64_t, int64_t>>> ends_;  // per element
+  std::vector<std::pair<int64_t, int64_t>> twice_;  // points the contour starts a segment at twice
+};
+
+std::optional<SelfCrossing> crossing_in_a_pass(const Contour& c, const FirstStageOptions& o, GridPoint start,
+                                               const std::vector<Move>& moves, std::vector<Move>* in_pass) {
+  const Touching touching(c, 1.0 / o.blu_mm);
+  const auto ignore = [&](int a, int b) { return touching(moves[a].element, moves[b].element); };
+  for (size_t p = 0; p < std::max<size_t>(1, c.passes.size()); ++p) {
+    *in_pass = pass_moves(c, moves, p);
+    if (const auto x = find_self_crossing(start, *in_pass, ignore)) return x;
+  }
+  return std::nullopt;
+}
+
+// A crossing of the contour's own path, else of the cutter path, within one pass: a
+// warning, not an error (docs/first-stage.md, "Self-crossing paths").
 void warn_self_crossing(const Contour& contour, const FirstStageOptions& o, FirstStageResult& res) {
   const auto where = [&](const SelfCrossing& x) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "(%.3f, %.3f) mm", x.at.x * o.blu_mm, x.at.y * o.blu_mm);
     return std::string(buf);
   };
-  if (const auto x = find_self_crossing(res.contour_start, res.contour_moves)) {
+  std::vector<Move> in_pass;
+  if (const auto x = crossing_in_a_pass(contour, o, res.contour_start, res.contour_moves, &in_pass)) {
     res.warnings.push_back(contour.file + ": warning: the contour crosses itself at " + where(*x) +
                            " (" + element_name(contour, res.contour_moves[x->move_a]) + " and " +
                            element_name(contour, res.contour_moves[x->move_b]) +
@@ -98,7 +170,7 @@ void warn_self_crossing(const Contour& contour, const FirstStageOptions& o, Firs
     return;
   }
   if (o.cutter_radius_mm <= 0) return;
-  if (const auto x = find_self_crossing(res.start, res.moves))
+  if (const auto x = crossing_in_a_pass(contour, o, res.start, res.moves, &in_pass))
     res.warnings.push_back(contour.file + ": warning: the cutter path (radius " + fmt_mm(o.cutter_radius_mm) +
                            " mm) crosses itself at " + where(*x) + " (near " +
                            element_name(contour, res.moves[x->move_a]) +
@@ -258,7 +330,7 @@ tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o
   for (const Move& m : r.moves) {
     tape::Block b;
     b.n = ++n;
-    b.motion = m.kind == MoveKind::kLine    ? tape::Motion::kLine
+    b.motion = m.kind == MoveKind::kLine    ? (m.rapid ? tape::Motion::kRapid : tape::Motion::kLine)
                : m.kind == MoveKind::kArcCw ? tape::Motion::kArcCw
                                             : tape::Motion::kArcCcw;
     b.dx = m.to.x - cur.x;
@@ -267,7 +339,8 @@ tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o
       b.i = m.centre.x - cur.x;
       b.j = m.centre.y - cur.y;
     }
-    b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), o.feed_mm_min, format);
+    // A traverse (G00) has no F: it plays at the machine's rapid rate.
+    if (!m.rapid) b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), o.feed_mm_min, format);
     prog.blocks.push_back(b);
     cur = m.to;
   }

@@ -60,7 +60,8 @@ struct FirstStageResult {
 // Checks the options (throws std::invalid_argument with a one-line reason).
 void validate_options(const FirstStageOptions& options);
 FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions& options);
-// Moves -> tape program (G01/G02/G03 blocks with inverse-time F, N from 1).
+// Moves -> tape program (G01/G02/G03 blocks with inverse-time F, traverses as G00 blocks
+// without F, N from 1).
 tape::Program make_program(const FirstStageResult& result, const FirstStageOptions& options);
 tape::Format tape_format(const FirstStageOptions& options);
 // Inverse-time feed in 10^-FeedFracDigits 1/min for a move of `length_mm` at

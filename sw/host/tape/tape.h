@@ -15,15 +15,18 @@
 
 namespace ncinterp::tape {
 
-// G01, G02, G03 (tape_motions.def: the code is the G number).
+// G00, G01, G02, G03 (tape_motions.def: the code is the G number).
 enum class Motion : uint8_t {
 #define TAPE_MOTION(name, code, word) k##name = code,
 #include "tape_motions.def"
 #undef TAPE_MOTION
 };
-
-// A circular arc (G02, G03); the others are straight: G01 at the feed, G00 at the rapid rate.
+// G02/G03: played by the circle DDA, checked by the arc rules.
 constexpr bool is_arc(Motion m) { return m == Motion::kArcCw || m == Motion::kArcCcw; }
+// G00: a traverse, not a cut; it needs no F and plays at the machine's rapid rate.
+constexpr bool is_rapid(Motion m) { return m == Motion::kRapid; }
+// "G00", "G01", "G02", "G03".
+const char* motion_word(Motion m);
 
 // A G number that is a motion (tape_motions.def).
 constexpr bool is_motion(uint64_t g) {
@@ -49,7 +52,8 @@ struct Block {
   Motion motion = Motion::kLine;
   int64_t dx = 0, dy = 0;       // incremental move, BLU
   int64_t i = 0, j = 0;         // arc centre relative to the block's start, BLU
-  uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min (G00: none)
+  uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min;
+                                // 0 for a G00 block (it plays at the rapid rate)
 };
 
 struct Format {

@@ -239,13 +239,15 @@ class Reader {
 
   void end_block() {
     if (motion_in_block_) {
-      // G00 plays at the machine's rapid rate: it needs no F (and keeps the modal one).
-      if (feed_ == 0 && motion_ != Motion::kRapid)
+      // A G00 block needs no F (it plays at the rapid rate): its feed is 0 in the Program,
+      // while an F word in it still sets the modal F for the blocks that follow.
+      const bool rapid = is_rapid(motion_);
+      if (feed_ == 0 && !rapid)
         fail(TapeError::kMissingFeed, offset_,
              "missing feed: no F programmed (or F0) for a motion block");
       block_.n = n_;
       block_.motion = motion_;
-      block_.feed = feed_;
+      block_.feed = rapid ? 0 : feed_;
       if (is_arc(motion_)) check_arc();
       program_.blocks.push_back(block_);
     }

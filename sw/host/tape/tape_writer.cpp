@@ -1,7 +1,8 @@
 // Tape writer: Program -> ISO 6983 word-address text, one LF-terminated block per line.
 // Idea: the writer only produces tapes the reader (and so the interpolator) accepts: every
 // value is checked against the Format's register widths before anything is written, and
-// numbers always carry exactly the required fraction digits.
+// numbers always carry exactly the required fraction digits. A G00 (traverse) block is
+// written without F: it plays at the machine's rapid rate.
 #include <sstream>
 #include <stdexcept>
 
@@ -32,6 +33,11 @@ std::string signed_fixed_point(int64_t value, unsigned frac_digits) {
   return value < 0 ? "-" + digits : digits;
 }
 
+void check_sequence(const Block& b, const Format& f, const std::string& where) {
+  if (b.n > max_for_width(f.seq_width))
+    throw std::invalid_argument(where + "N exceeds the sequence register");
+}
+
 void check_block(const Block& b, const Format& f) {
   const auto where = "block N" + std::to_string(b.n) + ": ";
   const uint64_t inc_max = max_for_width(f.inc_width);
@@ -46,33 +52,46 @@ void check_block(const Block& b, const Format& f) {
   check_inc(b.i, "I");
   check_inc(b.j, "J");
   if (!is_arc(b.motion) && (b.i != 0 || b.j != 0))
-    throw std::invalid_argument(where + "a line block has I/J");
+    throw std::invalid_argument(where + "a " + motion_word(b.motion) + " block has I/J");
   if (is_arc(b.motion)) {
     const ArcRuleBroken broken = broken_arc_rule(b, inc_max);
     if (broken.code != TapeError::kNone) throw std::invalid_argument(where + broken.message);
   }
-  if (b.feed == 0 && b.motion != Motion::kRapid) throw std::invalid_argument(where + "feed F is 0");
+  if (is_rapid(b.motion)) {
+    // The reader gives a G00 block feed 0 whatever F the tape has: written so, read so.
+    if (b.feed != 0) throw std::invalid_argument(where + "a G00 block has no F (it plays at the rapid rate)");
+    return check_sequence(b, f, where);
+  }
+  if (b.feed == 0) throw std::invalid_argument(where + "feed F is 0");
   if (b.feed > max_for_width(f.feed_width))
     throw std::invalid_argument(where + "feed exceeds the F register");
-  if (b.n > max_for_width(f.seq_width))
-    throw std::invalid_argument(where + "N exceeds the sequence register");
+  check_sequence(b, f, where);
 }
 
 }  // namespace
+
+const char* motion_word(Motion m) {
+  switch (m) {
+#define TAPE_MOTION(name, code, word) \
+  case Motion::k##name: return word;
+#include "tape_motions.def"
+#undef TAPE_MOTION
+  }
+  return "G??";
+}
 
 std::string format_program(const Program& program, const Format& format) {
   std::ostringstream out;
   out << "%\nG17 G21 G91 G93\n";
   for (const Block& b : program.blocks) {
     check_block(b, format);
-    out << 'N' << b.n << " G0" << static_cast<int>(b.motion)
+    out << 'N' << b.n << ' ' << motion_word(b.motion)
         << " X" << signed_fixed_point(b.dx, format.frac_digits)
         << " Y" << signed_fixed_point(b.dy, format.frac_digits);
     if (is_arc(b.motion))
       out << " I" << signed_fixed_point(b.i, format.frac_digits)
           << " J" << signed_fixed_point(b.j, format.frac_digits);
-    // A rapid traverse (G00) plays at the machine's rapid rate: no F.
-    if (b.motion != Motion::kRapid) out << " F" << fixed_point(b.feed, format.feed_frac_digits);
+    if (!is_rapid(b.motion)) out << " F" << fixed_point(b.feed, format.feed_frac_digits);
     out << '\n';
   }
   out << (program.end_m30 ? "M30" : "M02") << "\n%\n";

@@ -271,3 +271,61 @@ TEST_F(SyntheticRun, PulseOffThePathBreaksTheBound) {
 
 }  // namespace
 }  // namespace ncinterp::checker
+
+namespace ncinterp::checker {
+namespace {
+
+// Traverses come from the tape, nothing is guessed (the minimal case: a traverse
+// back along the finished line was measured as a cut, and a cut off the contour could pass
+// as a traverse). The pulses are those of the same geometry as G01 blocks on the golden
+// model; the checker is told the middle block is a G00, and judges: the G00 block not
+// against the contour (it lies 5 mm off), the G01 blocks against it, and a G01 block that
+// strays is a failure even where it runs along a traverse of the input.
+TEST(TrajectoryChecker, TraversesAreTheTapesG00BlocksAndOnlyThem) {
+  // Contour: a line X0 -> X20 cut, then the input's traverse back to X0 at Y5, and a cut
+  // X0 -> X20 at Y5.
+  firststage::Contour c;
+  c.origin = {0, 0};
+  std::vector<firststage::Segment> segs = {firststage::Segment::line({0, 0}, {20, 0}),
+                                           firststage::Segment::line({20, 0}, {0, 5}),
+                                           firststage::Segment::line({0, 5}, {20, 5})};
+  segs[1].rapid = true;
+  c = firststage::contour_from_segments("t.nc", {0, 0}, segs);
+  tape::Program played;  // all G01: what the golden model plays today
+  played.blocks = {{1, tape::Motion::kLine, 20000, 0, 0, 0, 50000},
+                   {2, tape::Motion::kLine, -20000, 5000, 0, 0, 50000},
+                   {3, tape::Motion::kLine, 20000, 0, 0, 0, 50000}};
+  InterpConfig cfg = interp_config(1e6);
+  const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(played), cfg, 1);
+  const auto judge = [&](tape::Motion middle) {
+    tape::Program p = played;
+    p.blocks[1].motion = middle;
+    if (tape::is_rapid(middle)) p.blocks[1].feed = 0;
+    ReferenceOptions ro;
+    ro.blu_mm = 0.001;
+    ReferenceContour ref(c, ro);
+    CheckerOptions co;
+    co.feed_modulus = cfg.feed_modulus;
+    auto checker = std::make_unique<TrajectoryChecker>(lay_out(p), &ref, co);
+    for (size_t k = 0; k < trace.size(); ++k) checker->observe(k, trace[k]);
+    checker->finish(trace.back());
+    checker->check_tolerance(10.0);
+    return checker;
+  };
+  const auto as_g00 = judge(tape::Motion::kRapid);
+  EXPECT_EQ(as_g00->violation_count(), 0u) << first_violation(*as_g00);
+  EXPECT_TRUE(as_g00->results()[1].rapid);
+  EXPECT_EQ(as_g00->results()[1].total.count, 0u);
+  EXPECT_GT(as_g00->results()[1].path.count, 0u);  // its interpolator error is measured
+  EXPECT_LE(as_g00->total_error().max, 1.0);
+  // The same block as G01 is a cut 2.5 mm (2500 BLU) off the contour at its middle.
+  const auto as_g01 = judge(tape::Motion::kLine);
+  EXPECT_FALSE(as_g01->results()[1].rapid);
+  EXPECT_GT(as_g01->results()[1].total.max, 2000.0);
+  ASSERT_FALSE(as_g01->violations().empty());
+  EXPECT_EQ(as_g01->violations().front().rule, Rule::kTotalError);
+  EXPECT_EQ(as_g01->violations().front().n, 2u);
+}
+
+}  // namespace
+}  // namespace ncinterp::checker

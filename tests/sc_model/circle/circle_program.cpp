@@ -19,7 +19,7 @@ namespace {
 
 uint64_t magnitude(int64_t v) { return static_cast<uint64_t>(v < 0 ? -v : v); }
 
-bool is_arc(const tape::Block& b) { return b.motion != tape::Motion::kLine; }
+bool is_arc(const tape::Block& b) { return tape::is_arc(b.motion); }
 
 QuadrantArc arc_of(const tape::Block& b) {
   QuadrantArc a;

@@ -138,7 +138,7 @@ TEST(CircleInterp, RandomProgramsOfArcsAndLines) {
   int arcs = 0;
   for (int t = 0; t < 20; ++t) {
     const tape::Program p = test::random_arc_program(rng, 20, 0.8, cfg.feed_modulus);
-    for (const auto& b : p.blocks) arcs += b.motion != tape::Motion::kLine;
+    for (const auto& b : p.blocks) arcs += tape::is_arc(b.motion);
     PlayRun r = play(cfg, test::program_frames(p), 1 + rng() % 3);
     ASSERT_TRUE(r.out.done) << "tape " << t << ": error " << int(r.out.error_code) << " block "
                             << r.out.error_block;

@@ -74,6 +74,7 @@ void expect_same_run(const PlaySummary& a, const PlaySummary& b) {
   EXPECT_EQ(a.max_path_error, b.max_path_error);
   EXPECT_EQ(a.gap_cycles, b.gap_cycles);
   EXPECT_EQ(a.lead_in_cycles, b.lead_in_cycles);
+  EXPECT_EQ(a.busy_cycles, b.busy_cycles);
   ASSERT_EQ(a.timeline.size(), b.timeline.size());
   for (size_t k = 0; k < a.timeline.size(); ++k) {
     EXPECT_EQ(a.timeline[k].n, b.timeline[k].n);

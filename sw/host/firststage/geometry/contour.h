@@ -14,6 +14,15 @@ namespace ncinterp::firststage {
 // (A smaller turn is taken as a smooth joint that a chord may cross; see docs/inputs.md.)
 constexpr double kSmoothJointAngle = 1e-3;  // rad
 
+// One cutting pass of a G-code program: its depth and the input elements taped in it (the
+// traverse to each run of cuts, the cuts, and after the last pass the traverse to where the
+// program ends). Contours from other inputs have one pass without a depth.
+struct CutPass {
+  double depth_mm;       // Z of the pass; NaN: the program has no Z
+  int first_element = 0;  // elements [first_element, end_element) in Contour::element_names
+  int end_element = 0;
+};
+
 struct Contour {
   std::string file;                 // input file, for messages
   Vec2 origin;                      // position before the first segment (mm)
@@ -23,6 +32,9 @@ struct Contour {
   // What the reader ignored or doubts, one line each ("FILE: warning: ..."); printed by
   // the commands on stderr.
   std::vector<std::string> warnings;
+  // G-code with several cutting depths: one pass per depth, shallowest first, in the
+  // order of the segments. Empty: one pass of every element.
+  std::vector<CutPass> passes;
   // Airfoil inputs: the trailing-edge points are corners, the rest of the spline is smooth.
 
   Vec2 end() const { return segments.empty() ? origin : segments.back().end(); }

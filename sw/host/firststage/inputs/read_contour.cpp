@@ -16,11 +16,12 @@ InputKind input_kind_of(const std::string& path) {
   std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext == "json") return InputKind::kJson;
-  if (ext == "nc" || ext == "ngc" || ext == "gcode") return InputKind::kGcode;
+  // .tap: what Mach3, Fusion 360, SheetCam and pcb-gcode posts name their G-code.
+  if (ext == "nc" || ext == "ngc" || ext == "gcode" || ext == "tap") return InputKind::kGcode;
   if (ext == "dat") return InputKind::kAirfoil;
   throw InputError(path, 0,
                    "unknown input kind '." + ext +
-                       "': use .json (contour), .nc/.ngc/.gcode (G-code) or .dat (airfoil)");
+                       "': use .json (contour), .nc/.ngc/.gcode/.tap (G-code) or .dat (airfoil)");
 }
 
 const char* input_kind_name(InputKind kind) {

@@ -56,7 +56,8 @@ void add_arc(Vec2 from, const Move& m, int index, std::vector<Piece>& out) {
 
 }  // namespace
 
-std::optional<SelfCrossing> find_self_crossing(GridPoint start, const std::vector<Move>& moves) {
+std::optional<SelfCrossing> find_self_crossing(GridPoint start, const std::vector<Move>& moves,
+                                               const std::function<bool(int, int)>& ignore) {
   std::vector<Piece> pieces;
   Vec2 cur = to_vec(start);
   for (size_t i = 0; i < moves.size(); ++i) {
@@ -77,6 +78,7 @@ std::optional<SelfCrossing> find_self_crossing(GridPoint start, const std::vecto
       if (std::max(p.a.y, p.b.y) < std::min(q.a.y, q.b.y) || std::max(q.a.y, q.b.y) < std::min(p.a.y, p.b.y))
         continue;
       if (!proper_crossing(p, q)) continue;
+      if (ignore && ignore(p.move, q.move)) continue;
       return SelfCrossing{crossing_point(p, q), std::min(p.move, q.move), std::max(p.move, q.move)};
     }
   }

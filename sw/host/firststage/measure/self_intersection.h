@@ -8,6 +8,7 @@
 // Only proper crossings count: pieces that follow each other, touch at an end point, or
 // overlap along a line (a path that goes back over itself) are not crossings.
 #pragma once
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct SelfCrossing {
   int move_a = 0, move_b = 0;  // indices of the two moves (a < b)
 };
 
-// The first crossing found among the non-rapid moves from `start` (BLU), if any.
-std::optional<SelfCrossing> find_self_crossing(GridPoint start, const std::vector<Move>& moves);
+// The first crossing found among the non-rapid moves from `start` (BLU), if any, leaving
+// out those of two moves a, b where `ignore(a, b)` holds.
+std::optional<SelfCrossing> find_self_crossing(GridPoint start, const std::vector<Move>& moves,
+                                               const std::function<bool(int, int)>& ignore = {});
 
 }  // namespace ncinterp::firststage

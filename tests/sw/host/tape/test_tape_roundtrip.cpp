@@ -45,6 +45,34 @@ TEST(TapeWriter, KnownProgramText) {
   EXPECT_EQ(format_program(p, f), "%\nG17 G21 G91 G93\nN1 G01 X12345. Y-5. F6000.0\nM30\n%\n");
 }
 
+TEST(TapeWriter, TraversesAreG00WithoutFAndReadBackWithFeedZero) {
+  Program p;
+  p.blocks.push_back({1, Motion::kRapid, 20000, -3000, 0, 0, 0});
+  p.blocks.push_back({2, Motion::kLine, 5, 0, 0, 0, 1000});
+  const std::string text = format_program(p, Format{});
+  EXPECT_EQ(text,
+            "%\nG17 G21 G91 G93\nN1 G00 X20.000 Y-3.000\nN2 G01 X0.005 Y0.000 F1.000\nM02\n%\n");
+  const Program back = parse_frames(add_parity(text), Format{});
+  ASSERT_EQ(back.blocks.size(), 2u);
+  EXPECT_EQ(back.blocks[0].motion, Motion::kRapid);
+  EXPECT_EQ(back.blocks[0].feed, 0u);
+  EXPECT_EQ(back.blocks[0].dx, 20000);
+  // An F on a G00 block is modal for what follows; the G00 block itself keeps feed 0.
+  const Program modal = parse_frames(
+      add_parity("%\nN1 G00 X1.000 Y0.000 F5.000\nN2 G01 X1.000\nM02\n%\n"), Format{});
+  ASSERT_EQ(modal.blocks.size(), 2u);
+  EXPECT_EQ(modal.blocks[0].feed, 0u);
+  EXPECT_EQ(modal.blocks[1].feed, 5000u);
+  // The first G01 after a G00 still needs an F: the rapid gives it none.
+  EXPECT_THROW(parse_frames(add_parity("%\nN1 G00 X1.000 Y0.000\nN2 G01 X1.000\nM02\n%\n"), Format{}),
+               TapeFormatError);
+  // The writer refuses what it could not read back: an F or I/J on a G00 block.
+  p.blocks[0].feed = 7;
+  EXPECT_THROW(format_program(p, Format{}), std::invalid_argument);
+  p.blocks[0] = {1, Motion::kRapid, 1, 1, 5, 0, 0};
+  EXPECT_THROW(format_program(p, Format{}), std::invalid_argument);
+}
+
 TEST(TapeWriter, RefusesValuesTheDecoderWouldReject) {
   Format f;  // inc_width 16: |d| <= 65535
   Program p;
@@ -82,7 +110,7 @@ Program random_program(std::mt19937_64& rng, const Format& f) {
   const int64_t inc_max = (int64_t{1} << f.inc_width) - 1;
   std::uniform_int_distribution<int64_t> inc(-inc_max, inc_max);
   std::uniform_int_distribution<uint64_t> feed(1, (uint64_t{1} << f.feed_width) - 1);
-  std::uniform_int_distribution<int> count(0, 30), kind(0, 5);
+  std::uniform_int_distribution<int> count(0, 30), kind(0, 6);
   Program p;
   p.end_m30 = rng() & 1;
   uint32_t n = static_cast<uint32_t>(rng() % 100);
@@ -96,7 +124,11 @@ Program random_program(std::mt19937_64& rng, const Format& f) {
     b.dy = what == 2 ? 0 : inc(rng);
     if (what == 3) b.dx = b.dy = 0;
     b.feed = feed(rng);
-    if (what >= 4)  // arcs must be good arcs: the reader checks them like the decoder
+    if (what == 6) {  // a traverse: no F
+      b.motion = Motion::kRapid;
+      b.feed = 0;
+    }
+    if (what == 4 || what == 5)  // arcs must be good arcs: the reader checks them like the decoder
       b = quadrant_arc(b.n, 1 + std::llabs(inc(rng)) % inc_max, static_cast<int>(rng() % 4),
                        what == 5, b.feed);
     p.blocks.push_back(b);

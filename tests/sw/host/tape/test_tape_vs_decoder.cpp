@@ -4,7 +4,8 @@
 // Agreement means: the same verdict; on an error the same code, block N and frame offset;
 // and the machine's final position is the sum of the blocks the reader accepted (so no
 // pulse comes from the bad block). The tapes mix lines and quadrant arcs, so damage also
-// makes arcs that leave their quadrant, lose their radius or miss their circle.
+// makes arcs that leave their quadrant, lose their radius or miss their circle, and G00
+// (traverse) blocks are in the mix.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -27,6 +28,8 @@ std::string random_good_tape(std::mt19937_64& rng) {
     const uint64_t feed = 1 + rng() % 5000;
     if (rng() % 3 == 0)
       p.blocks.push_back(quadrant_arc(n, radius(rng), static_cast<int>(rng() % 4), rng() & 1, feed));
+    else if (rng() % 5 == 0)
+      p.blocks.push_back({n, Motion::kRapid, inc(rng), inc(rng), 0, 0, 0});
     else
       p.blocks.push_back({n, Motion::kLine, inc(rng), inc(rng), 0, 0, feed});
   }
