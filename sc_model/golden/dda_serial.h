@@ -81,6 +81,21 @@ class SerialDda {
     return e;
   }
 
+  // Event jumping (GoldenInterp::quiet_ticks): while an iteration runs, the edges from now
+  // on at which it shows nothing outside, up to its next pulse, words or end edge (the edge
+  // that takes clock_ to T - 1 is target T's event); skip(n) passes n of them.
+  uint64_t quiet_edges() const {
+    if (!run_) return 0;
+    unsigned next = 2 * pass_;
+    const auto sooner = [&](unsigned target) {
+      if (target >= clock_ + 2 && target < next) next = target;
+    };
+    if (k_ != 0) sooner((line_ ? 0 : pass_) + k_);
+    if (words_) sooner(pass_);
+    return next - clock_ - 2;
+  }
+  void skip(uint64_t n) { clock_ += static_cast<unsigned>(n); }
+
   bool done() const { return done_; }    // done_o
   bool running() const { return run_; }  // an iteration's passes run
   bool words() const { return words_; }  // words_o: the block's words are still read

@@ -77,9 +77,14 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   if (fault_cycle_ != std::numeric_limits<uint64_t>::max())
     n = fault_cycle_ > cycle_ + 1 ? fault_cycle_ - cycle_ - 1 : 0;  // fault_edge() at fault_cycle_
   if (busy) {
-    if (saturated_ || player_running_) return 0;  // a strobe every edge, or a serial pass
+    // A running serial iteration ignores strobes: its own pulse, words and end edges bound
+    // the jump. Otherwise a saturated block strobes at every edge.
+    if (player_running_)
+      n = std::min(n, serial_.quiet_edges());
+    else if (saturated_)
+      return 0;
     // The feed generator strobes at the first edge j with phase + j S >= M (phase < M).
-    if (feed_step_ > 0) {
+    if (!saturated_ && feed_step_ > 0) {
       const uint64_t first_strobe = (modulus_ - phase_ + feed_step_ - 1) / feed_step_;
       n = std::min(n, first_strobe - 1);
     }
@@ -90,6 +95,7 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
 void GoldenInterp::skip(uint64_t n) {
   cycle_ += n;
   if (out_.busy && !player_done_ && !saturated_) phase_ += n * feed_step_;  // < M: no strobe
+  if (player_running_) serial_.skip(n);
 }
 
 void GoldenInterp::load_block() {

@@ -7,6 +7,7 @@
 
 #include "checker_test_support.h"
 #include "check_session.h"
+#include "dda_serial.h"
 #include "trajectory_checker.h"
 
 namespace ncinterp::checker {
@@ -277,10 +278,10 @@ namespace {
 
 // Traverses come from the tape, nothing is guessed (the minimal case: a traverse
 // back along the finished line was measured as a cut, and a cut off the contour could pass
-// as a traverse). The pulses are those of the same geometry as G01 blocks on the golden
-// model; the checker is told the middle block is a G00, and judges: the G00 block not
-// against the contour (it lies 5 mm off), the G01 blocks against it, and a G01 block that
-// strays is a failure even where it runs along a traverse of the input.
+// as a traverse). The same geometry plays on the golden model with the middle block a G00
+// and a G01, and the checker judges: the G00 block not against the contour (it lies 5 mm
+// off), the G01 blocks against it, and a G01 block that strays is a failure even where it
+// runs along a traverse of the input.
 TEST(TrajectoryChecker, TraversesAreTheTapesG00BlocksAndOnlyThem) {
   // Contour: a line X0 -> X20 cut, then the input's traverse back to X0 at Y5, and a cut
   // X0 -> X20 at Y5.
@@ -291,21 +292,20 @@ TEST(TrajectoryChecker, TraversesAreTheTapesG00BlocksAndOnlyThem) {
                                            firststage::Segment::line({0, 5}, {20, 5})};
   segs[1].rapid = true;
   c = firststage::contour_from_segments("t.nc", {0, 0}, segs);
-  tape::Program played;  // all G01: what the golden model plays today
-  played.blocks = {{1, tape::Motion::kLine, 20000, 0, 0, 0, 50000},
-                   {2, tape::Motion::kLine, -20000, 5000, 0, 0, 50000},
-                   {3, tape::Motion::kLine, 20000, 0, 0, 0, 50000}};
-  InterpConfig cfg = interp_config(1e6);
-  const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(played), cfg, 1);
+  const InterpConfig cfg = interp_config(1e6);
   const auto judge = [&](tape::Motion middle) {
-    tape::Program p = played;
-    p.blocks[1].motion = middle;
-    if (tape::is_rapid(middle)) p.blocks[1].feed = 0;
+    tape::Program p;
+    p.blocks = {{1, tape::Motion::kLine, 20000, 0, 0, 0, 50000},
+                {2, middle, -20000, 5000, 0, 0, tape::is_rapid(middle) ? 0u : 50000u},
+                {3, tape::Motion::kLine, 20000, 0, 0, 0, 50000}};
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
     ReferenceOptions ro;
     ro.blu_mm = 0.001;
     ReferenceContour ref(c, ro);
     CheckerOptions co;
     co.feed_modulus = cfg.feed_modulus;
+    co.lead_bits = SerialDda::player_lead_bits(cfg);
+    co.rapid_step = cfg.rapid_step_on_port();
     auto checker = std::make_unique<TrajectoryChecker>(lay_out(p), &ref, co);
     for (size_t k = 0; k < trace.size(); ++k) checker->observe(k, trace[k]);
     checker->finish(trace.back());
