@@ -108,18 +108,19 @@ package interp_pkg;
   localparam logic [6:0] ChY       = 7'h59;  // 'Y'
 
   // The board's serial link (board_link.def): its special bytes, the board's own error
-  // codes (beside the tape errors above), the status lines' kind letters and the hex
-  // digits of each of their three fields.
+  // codes (beside the tape errors above), the status lines' kind letters, the digits
+  // of their block field and of each of their two other fields.
   localparam logic [7:0] LinkEndOfTape = 8'h84;  // EOT with its ISO 840 parity bit: the tape's end
   localparam logic [7:0] LinkXon       = 8'h11;  // XON: the board can take more bytes
   localparam logic [7:0] LinkXoff      = 8'h13;  // XOFF: the board's FIFO is filling, stop sending
   localparam logic [7:0] BoardErrFifoOverflow = 8'h10;  // the board's tape FIFO overflowed (flow control failed)
   localparam logic [7:0] BoardErrFraming      = 8'h11;  // UART framing error (wrong baud rate or a broken line)
   localparam logic [7:0] BoardErrStepOverrun  = 8'h12;  // a step pulse was lost: steps came faster than the driver timing allows
-  localparam logic [7:0] StatusBlock = 8'h42;  // a block ended: its N, X, Y
+  localparam logic [7:0] StatusBlock = 8'h42;  // the machine has moved: the block playing (or last played) N, X, Y
   localparam logic [7:0] StatusDone  = 8'h44;  // the program is done: the last block's N, X, Y
   localparam logic [7:0] StatusError = 8'h45;  // the machine stopped on an error: the bad block's N, the frame offset, the code
-  localparam int StatusDigits = 5;
+  localparam int StatusBlockDigits = 2;
+  localparam int StatusDigits = 3;
   /* verilator lint_on UNUSEDPARAM */
 
 endpackage

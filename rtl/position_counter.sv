@@ -18,9 +18,12 @@ module position_counter #(
   // pos_q: pulses counted since reset (plus minus minus).
   logic [PosWidth-1:0] pos_q, pos_d;
 
+  // One adder for both directions: pos + 1 or pos + (-1), the addend's upper bits ~up_i
+  // (one LUT and one carry per bit on an iCE40, where +1 and -1 apart and a multiplexer
+  // took nearly three).
   always_comb begin
     pos_d = pos_q;
-    if (count_i) pos_d = up_i ? pos_q + 1'b1 : pos_q - 1'b1;
+    if (count_i) pos_d = pos_q + {{(PosWidth - 1){!up_i}}, 1'b1};
   end
 
   always_ff @(posedge clk_i) begin

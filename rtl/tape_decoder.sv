@@ -110,9 +110,9 @@ module tape_decoder #(
 
   // Word parser: its error, and the word a delimiter ends or starts.
   logic                   body_char;  // a body character reaches the parser at this edge
-  logic                   word_err, delimiter, word_end, word_neg, word_start;
+  logic                   word_err, delimiter, word_end, word_neg, word_start, word_err_at_word;
   logic [3:0]             word_err_code;
-  logic [OffsetWidth-1:0] word_err_offset, word_offset;
+  logic [OffsetWidth-1:0] word_offset;
   logic [6:0]             word_letter;
   logic [NumWidth-1:0]    word_value;
   // BitSerial: a digit's pass runs (no frame is processed), and its limit check's verdict.
@@ -153,10 +153,11 @@ module tape_decoder #(
   logic n_seen_q, n_seen_d, any_word_q, any_word_d;
   logic motion_blk_q, motion_blk_d, end_blk_q, end_blk_d;
 
-  // Error capture: the first error found (valid in StError).
+  // Error capture: the first error found (valid in StError). Its block is n_q: n_d at the
+  // error's edge, and no N is committed in StError; its offset is the frame input's
+  // counter, which the error's edge sets to it (fail_back, fail_word) and which no frame
+  // moves after it.
   logic [3:0]             err_code_q, err_code_d;
-  logic [SeqWidth-1:0]    err_block_q, err_block_d;
-  logic [OffsetWidth-1:0] err_offset_q, err_offset_d;
 
   // Combinational helpers.
   logic                   update;       // the block assembly's registers change at this edge
@@ -164,7 +165,9 @@ module tape_decoder #(
   logic                   tape_cut;     // truncated tape found at this edge
   logic                   fail;         // an error is found at this edge
   logic [3:0]             fail_code;
-  logic [OffsetWidth-1:0] fail_offset;
+  // The error's offset: the frame processed at this edge (or, with none, the next one);
+  // fail_back: the last frame processed; fail_word: the word's letter (word_offset).
+  logic                   fail_back, fail_word;
   logic                   word_ok;      // the word ended by this frame was committed
   logic [3:0]             word_refusal; // else why not: an unsupported code, or an arc
                                         // without circle mode
@@ -191,6 +194,8 @@ module tape_decoder #(
     .accept_i(state_q != StHold && !preparing && state_q != StError && !word_busy),
     .error_next_i(state_next == StError),
     .busy_next_i(state_next == StHold || state_next == StPrepare || word_busy_next),
+    .err_i(update && fail), .err_back_i(fail_back), .err_word_i(fail_word),
+    .word_offset_i(word_offset),
     .take_o(take), .char_o(ch), .parity_err_o(parity_err), .offset_o(offset),
     .waiting_o(waiting), .tape_ended_o(tape_end_q)
   );
@@ -203,7 +208,7 @@ module tape_decoder #(
     .NumWidth(NumWidth), .BitSerial(BitSerial)
   ) u_word (
     .clk_i, .rst_ni, .char_valid_i(body_char), .char_i(ch), .offset_i(offset),
-    .err_o(word_err), .err_code_o(word_err_code), .err_offset_o(word_err_offset),
+    .err_o(word_err), .err_code_o(word_err_code), .err_at_word_o(word_err_at_word),
     .delimiter_o(delimiter), .word_end_o(word_end), .word_letter_o(word_letter),
     .word_value_o(word_value), .word_neg_o(word_neg), .word_offset_o(word_offset),
     .word_start_o(word_start), .busy_o(word_busy), .busy_next_o(word_busy_next),
@@ -224,8 +229,9 @@ module tape_decoder #(
     // are don't-care ('x): the verilated model skips them (fast) and synthesis folds the 'x
     // away (no gate per next-state bit).
     {state_d, n_d, motion_d, feed_d,
-     n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, err_block_d, err_offset_d, k_d,
-     step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_offset, word_ok, word_refusal,
+     n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, k_d,
+     step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_back, fail_word, word_ok,
+     word_refusal,
      step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
      step_add, rapid} = 'x;
     word_commit = 1'b0;
@@ -240,8 +246,6 @@ module tape_decoder #(
       motion_blk_d  = motion_blk_q;
       end_blk_d     = end_blk_q;
       err_code_d    = err_code_q;
-      err_block_d   = err_block_q;
-      err_offset_d  = err_offset_q;
       k_d           = k_q;
       step_d        = step_q;
       step_over_d   = step_over_q;
@@ -251,7 +255,8 @@ module tape_decoder #(
       grow_y_d      = grow_y_q;
       fail          = 1'b0;
       fail_code     = interp_pkg::ErrParity;
-      fail_offset   = offset;
+      fail_back     = 1'b0;
+      fail_word     = 1'b0;
       word_ok       = 1'b1;
       word_refusal  = interp_pkg::ErrUnsupportedCode;
 
@@ -274,7 +279,7 @@ module tape_decoder #(
               if (word_err) begin
                 fail = 1'b1;
                 fail_code = word_err_code;
-                fail_offset = word_err_offset;
+                fail_word = word_err_at_word;
               end else if (delimiter) begin
                 // The word this character ends is committed first.
                 if (word_end) begin
@@ -309,7 +314,7 @@ module tape_decoder #(
                   if (!word_ok) begin
                     fail = 1'b1;
                     fail_code = word_refusal;
-                    fail_offset = word_offset;
+                    fail_word = 1'b1;
                   end
                 end
                 // Then the character itself.
@@ -363,7 +368,7 @@ module tape_decoder #(
         if (word_value_err) begin
           fail = 1'b1;
           fail_code = interp_pkg::ErrValueTooWide;
-          fail_offset = offset - 1'b1;  // the digit, the last frame processed
+          fail_back = 1'b1;  // the digit, the last frame processed
         end
       end else if (preparing) begin
         // The one adder: S + F (a line's first clock, an arc's iterations), S + the rapid
@@ -398,7 +403,7 @@ module tape_decoder #(
           if (arc_err) begin
             fail = 1'b1;
             fail_code = arc_code;
-            fail_offset = offset - 1'b1;  // the block's LF, the last frame processed
+            fail_back = 1'b1;  // the block's LF, the last frame processed
           end else begin
             state_d  = StHold;
             k_d      = arc_k;
@@ -425,9 +430,7 @@ module tape_decoder #(
 
       if (fail) begin
         state_d      = StError;
-        err_code_d   = fail_code;
-        err_block_d  = n_d;  // includes an N committed by this frame
-        err_offset_d = fail_offset;
+        err_code_d   = fail_code;  // its block: n_d, which includes an N committed by this frame
       end
     end
   end
@@ -496,8 +499,6 @@ module tape_decoder #(
       motion_blk_q  <= 1'b0;
       end_blk_q     <= 1'b0;
       err_code_q    <= '0;
-      err_block_q   <= '0;
-      err_offset_q  <= '0;
     end else if (update) begin
       state_q       <= state_d;
       n_q           <= n_d;
@@ -515,8 +516,6 @@ module tape_decoder #(
       motion_blk_q  <= motion_blk_d;
       end_blk_q     <= end_blk_d;
       err_code_q    <= err_code_d;
-      err_block_q   <= err_block_d;
-      err_offset_q  <= err_offset_d;
     end
   end
 
@@ -538,7 +537,7 @@ module tape_decoder #(
   assign tape_ended_o  = tape_end_q;
   assign err_o         = state_q == StError;
   assign err_code_o    = err_code_q;
-  assign err_block_o   = err_block_q;
-  assign err_offset_o  = err_offset_q;
+  assign err_block_o   = n_q;
+  assign err_offset_o  = offset;
 
 endmodule

@@ -8,7 +8,7 @@
 // is checked to be complete and handed to the block assembly (word_end_o with its letter,
 // value, sign and the offset of its letter); an address letter then starts the next word
 // (word_start_o). A syntax error (err_o) names its code and offset: the character's, or the
-// word's letter for an incomplete word.
+// word's letter for an incomplete word (err_at_word_o).
 // Idea: the number is read as an integer in basic length units: exactly FracDigits fraction
 // digits for X Y I J (FeedFracDigits for F), none for N G M, so no scaling is ever needed.
 // A digit is checked against the word's limit 2^w - 1 in NumWidth + 4 bits (num * 10 + 9
@@ -42,10 +42,11 @@ module tape_word_parser #(
   input  logic [6:0]             char_i,
   input  logic [OffsetWidth-1:0] offset_i,
   // The character breaks the number syntax or the word's limit (valid with char_valid_i),
-  // with the error's offset: the character's, or the word's letter for an incomplete word.
+  // with the error's offset: the character's, or (err_at_word_o) the word's letter
+  // (word_offset_o) for an incomplete word.
   output logic                   err_o,
   output logic [3:0]             err_code_o,
-  output logic [OffsetWidth-1:0] err_offset_o,
+  output logic                   err_at_word_o,
   // The character ends the word being read, if any (not a digit, sign, point or blank).
   output logic                   delimiter_o,
   // At a delimiter without err_o: a complete word ends (its letter interp_pkg::ChN ...,
@@ -108,7 +109,7 @@ module tape_word_parser #(
   always_comb begin
     {word_d, num_state_d, num_d, neg_d, frac_count_d, word_offset_d, is_blank, is_digit,
      is_sign, is_dot, is_letter, letter_word, signed_word, fractional_word, frac_limit, limit,
-     word_complete, num_next, err_o, err_code_o, err_offset_o, delimiter_o, word_end_o,
+     word_complete, num_next, err_o, err_code_o, err_at_word_o, delimiter_o, word_end_o,
      word_start_o} = 'x;
     if (char_valid_i) begin
       is_blank  = char_i == interp_pkg::ChSpace || char_i == interp_pkg::ChCr;
@@ -158,7 +159,7 @@ module tape_word_parser #(
       word_offset_d = word_offset_q;
       err_o         = 1'b0;
       err_code_o    = interp_pkg::ErrMalformedNumber;
-      err_offset_o  = offset_i;
+      err_at_word_o = 1'b0;
       if (is_digit) begin
         if (word_q == WordNone || (num_state_q == NumFrac && frac_count_q == frac_limit)) begin
           err_o = 1'b1;  // a digit outside a word, or one fraction digit too many
@@ -187,7 +188,7 @@ module tape_word_parser #(
         // address letter starts the next one.
         if (word_q != WordNone && !word_complete) begin
           err_o = 1'b1;
-          err_offset_o = word_offset_q;
+          err_at_word_o = 1'b1;
         end
         word_d = letter_word;
         if (is_letter) begin

@@ -12,10 +12,11 @@
 // overflowed (flow control failed), a UART framing error, a step pulse was lost (steps
 // faster than the driver timing allows), codes interp_pkg::BoardErr* (the link's list,
 // sw/host/tape/board_link.def); their block is the current block_n and their offset the
-// number of bytes received (modulo 2^OffsetWidth).
-// The interpolator is built as the board's configuration asks (arch, circle mode) with the
-// widths its status line shows: positions, N and frame offsets of StatusDigits hex digits
-// (20 bits: +-524 mm of travel at 1 um). The obs_<output>_o ports show interp_top's own
+// number of bytes the FIFO took before the error.
+// The interpolator is built as the board's configuration asks (arch, circle mode), with
+// 20-bit positions, N and frame offsets; the status line sends their low bits (N's low
+// 4 * StatusBlockDigits, the others' low 4 * StatusDigits), which the host resolves
+// (sc_model/board/status_text.h), so synthesis keeps only those bits. The obs_<output>_o ports show interp_top's own
 // outputs (one per line of sc_model/golden/interp_outputs.def, which board-sim reads them
 // by), the FIFO level and the received bytes to the board simulation; a real board leaves
 // them unconnected, and synthesis removes what only they read. Static configuration comes
@@ -41,10 +42,12 @@ module board_core #(
   parameter bit BitSerial  = 1'b1,
   // Circle mode (interp_top's CircleMode): the iCEstick's core is built without it.
   parameter bit CircleMode = 1'b1,
-  // The interpolator's widths on the board: what the status line's fields hold.
-  parameter int PosWidth    = 4 * interp_pkg::StatusDigits,
-  parameter int SeqWidth    = 4 * interp_pkg::StatusDigits,
-  parameter int OffsetWidth = 4 * interp_pkg::StatusDigits,
+  // The interpolator's widths on the board (+-524 mm of travel at 1 um, N and the frame
+  // offset below 2^20), as the golden model's board configuration has them
+  // (sc_model/board/boards.cpp); the status line sends their low bits.
+  parameter int PosWidth    = 20,
+  parameter int SeqWidth    = 20,
+  parameter int OffsetWidth = 20,
   // feed_modulus_i's width: enough for the board's clock (board_top).
   parameter int ModulusWidth = 48
 ) (
@@ -91,11 +94,14 @@ module board_core #(
   output logic [7:0]  board_error_code_o
 );
 
+  // The status line's fields: N, and X, Y, the frame offset (sc_model/board/status_text.h).
+  localparam int BlockWidth = 4 * interp_pkg::StatusBlockDigits;
   localparam int FieldWidth = 4 * interp_pkg::StatusDigits;
 
   logic [7:0]             rx_data, fifo_data;
   logic                   rx_valid, rx_ferr, fifo_valid, fifo_ready, overflow;
-  logic [FifoAddrWidth:0] level;
+  logic [FifoAddrWidth:0] stored, level;
+  logic [FieldWidth-1:0]  written;
   logic                   frame_ready, frame_valid, eot;
   logic                   overrun_x, overrun_y;
   logic                   i_step_x, i_dir_x, i_step_y, i_dir_y, i_busy, i_done, i_error, i_sat;
@@ -105,9 +111,8 @@ module board_core #(
   logic [3:0]             i_error_code;
 
   // tape_end_q: the EOT frame has been read. xoff_q: the host has been asked to stop.
-  // cts_n_q: CTS# to the host. rx_count_q: bytes received. board_err_q: board error code.
+  // cts_n_q: CTS# to the host. board_err_q: board error code.
   logic                   tape_end_q, xoff_q, cts_n_q;
-  logic [OffsetWidth-1:0] rx_count_q;
   logic [7:0]             board_err_q;
 
   uart_rx #(.DivWidth(DivWidth)) u_rx (
@@ -115,11 +120,23 @@ module board_core #(
     .data_o(rx_data), .valid_o(rx_valid), .frame_error_o(rx_ferr)
   );
 
-  byte_fifo #(.AddrWidth(FifoAddrWidth)) u_fifo (
-    .clk_i, .rst_ni, .in_data_i(rx_data), .in_valid_i(rx_valid),
+  // After a board error no byte is taken: the error line's offset stays the bytes
+  // written before it.
+  byte_fifo #(.AddrWidth(FifoAddrWidth), .CountWidth(FieldWidth)) u_fifo (
+    .clk_i, .rst_ni, .in_data_i(rx_data), .in_valid_i(rx_valid && board_err_q == '0),
     .out_data_o(fifo_data), .out_valid_o(fifo_valid), .out_ready_i(fifo_ready),
-    .level_o(level), .overflow_o(overflow)
+    .stored_o(stored), .level_o(level), .written_o(written), .overflow_o(overflow)
   );
+
+  // value >= bound for a constant bound, as gates: synthesis makes a carry chain of a
+  // compare, which a constant does not shrink.
+  function automatic logic at_least(input logic [FifoAddrWidth:0] value, input int bound);
+    at_least = 1'b1;
+    for (int i = 0; i <= FifoAddrWidth; i++) begin
+      if (bound[i]) at_least = value[i] && at_least;
+      else at_least = value[i] || at_least;
+    end
+  endfunction
 
   // The EOT frame is taken by the board, never shown to the decoder.
   assign eot         = fifo_valid && fifo_data == interp_pkg::LinkEndOfTape;
@@ -153,25 +170,23 @@ module board_core #(
     .overrun_o(overrun_y)
   );
 
-  // The status line's fields: N and offsets zero-extended, positions sign-extended to the
-  // field's width.
+  // The status line's fields: N, X, Y and the offsets modulo 2^FieldWidth (their low bits;
+  // the host resolves them, sc_model/board/status_text.h), so synthesis keeps only those
+  // bits of the interpolator's counters and registers that feed nothing else.
   logic                  any_error;
   logic [7:0]            line_code;
-  logic [SeqWidth-1:0]   line_block;
-  logic [OffsetWidth-1:0] line_offset;
-  logic [FieldWidth-1:0] field_pos_x, field_pos_y;
+  logic [BlockWidth-1:0] line_block;
+  logic [FieldWidth-1:0] line_offset;
   assign any_error   = i_error || board_err_q != '0;
   assign line_code   = board_err_q != '0 ? board_err_q : {4'd0, i_error_code};
-  assign line_block  = board_err_q != '0 ? i_block_n : i_error_block;
-  assign line_offset = board_err_q != '0 ? rx_count_q : i_error_offset;
-  assign field_pos_x = FieldWidth'($signed(i_pos_x));
-  assign field_pos_y = FieldWidth'($signed(i_pos_y));
+  assign line_block  = BlockWidth'(board_err_q != '0 ? i_block_n : i_error_block);
+  assign line_offset = board_err_q != '0 ? written : FieldWidth'(i_error_offset);
 
-  status_line #(.DivWidth(DivWidth), .FieldWidth(FieldWidth)) u_status (
-    .clk_i, .rst_ni, .bit_cycles_i,
-    .block_n_i(FieldWidth'(i_block_n)), .busy_i(i_busy), .done_i(i_done), .error_i(any_error),
-    .error_code_i(line_code), .error_block_i(FieldWidth'(line_block)),
-    .error_offset_i(FieldWidth'(line_offset)), .pos_x_i(field_pos_x), .pos_y_i(field_pos_y),
+  status_line #(.DivWidth(DivWidth), .BlockWidth(BlockWidth), .FieldWidth(FieldWidth)) u_status (
+    .clk_i, .rst_ni, .bit_cycles_i, .moved_i(i_step_x || i_step_y),
+    .block_n_i(BlockWidth'(i_block_n)), .pos_x_i(FieldWidth'(i_pos_x)),
+    .pos_y_i(FieldWidth'(i_pos_y)), .done_i(i_done), .error_i(any_error),
+    .error_code_i(line_code), .error_block_i(line_block), .error_offset_i(line_offset),
     .xoff_i(xoff_q), .tx_o
   );
 
@@ -180,16 +195,15 @@ module board_core #(
       tape_end_q  <= 1'b0;
       xoff_q      <= 1'b0;
       cts_n_q     <= 1'b1;
-      rx_count_q  <= '0;
       board_err_q <= '0;
     end else begin
       if (eot) tape_end_q <= 1'b1;
-      if (rx_valid) rx_count_q <= rx_count_q + 1'b1;
-      if (level >= (FifoAddrWidth + 1)'(XoffLevel)) xoff_q <= 1'b1;
-      else if (level <= (FifoAddrWidth + 1)'(XonLevel)) xoff_q <= 1'b0;
-      cts_n_q <= level >= (FifoAddrWidth + 1)'(CtsStopLevel);
-      // The first board error is kept.
-      if (board_err_q == '0) begin
+      if (at_least(stored, XoffLevel)) xoff_q <= 1'b1;
+      else if (!at_least(stored, XonLevel + 1)) xoff_q <= 1'b0;
+      cts_n_q <= at_least(stored, CtsStopLevel);
+      // The first board error is kept, unless the interpolator stopped on one before: the
+      // status line reports the first error.
+      if (board_err_q == '0 && !i_error) begin
         if (overflow) board_err_q <= interp_pkg::BoardErrFifoOverflow;
         else if (rx_ferr) board_err_q <= interp_pkg::BoardErrFraming;
         else if (overrun_x || overrun_y) board_err_q <= interp_pkg::BoardErrStepOverrun;

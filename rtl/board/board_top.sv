@@ -56,6 +56,13 @@ module board_top #(
   localparam int     ModulusWidth = $clog2(FeedModulus + 1);
   // rapid_step_i: the rapid rate in BLU/min (FracDigits 3) times 10^3 (FeedFracDigits 3).
   localparam longint RapidStep    = 64'(RapidMmMin) * 64'd1_000_000;
+  // The UART's bit counter and the stretchers' counters as wide as these constants (their
+  // ports carry them): 7 and 5 bits at 12 MHz, 115 200 baud and the default timing.
+  localparam int DivWidth     = $clog2(32'(BitCycles) + 1);
+  localparam logic [15:0] MaxStretch = SetupCycles > PulseCycles ?
+                                       (SetupCycles > LowCycles ? SetupCycles : LowCycles) :
+                                       (PulseCycles > LowCycles ? PulseCycles : LowCycles);
+  localparam int StretchWidth = $clog2(32'(MaxStretch) + 1);
 
   // por_q: counts clocks after configuration; the core leaves reset when it saturates.
   logic [3:0] por_q = '0;
@@ -69,13 +76,14 @@ module board_top #(
 
   /* verilator lint_off PINCONNECTEMPTY */
   board_core #(
-    .BitSerial(BitSerial), .CircleMode(CircleMode), .ModulusWidth(ModulusWidth)
+    .BitSerial(BitSerial), .CircleMode(CircleMode), .ModulusWidth(ModulusWidth),
+    .DivWidth(DivWidth), .StretchWidth(StretchWidth)
   ) u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
-    .bit_cycles_i(12'(BitCycles)), .feed_modulus_i(ModulusWidth'(FeedModulus)),
+    .bit_cycles_i(DivWidth'(BitCycles)), .feed_modulus_i(ModulusWidth'(FeedModulus)),
     .rapid_step_i(ModulusWidth'(RapidStep)),
-    .setup_cycles_i(8'(SetupCycles)), .pulse_cycles_i(8'(PulseCycles)),
-    .low_cycles_i(8'(LowCycles)),
+    .setup_cycles_i(StretchWidth'(SetupCycles)), .pulse_cycles_i(StretchWidth'(PulseCycles)),
+    .low_cycles_i(StretchWidth'(LowCycles)),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .led_busy_o(led_busy), .led_done_o(led_done), .led_error_o(led_error),

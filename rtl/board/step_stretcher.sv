@@ -31,17 +31,31 @@ module step_stretcher #(
 
   typedef enum logic [1:0] {StIdle, StSetup, StHigh, StLow} state_e;
 
+  // count_q: the clocks of the phase so far, this one included (1 at its first clock); the
+  // phase ends at its last clock, where count_q equals its length. An up count compared
+  // with the phase's length (a constant on the board: a few gates) needs no multiplexer
+  // of lengths into the counter.
   state_e                state_q, state_d;
-  logic [CountWidth-1:0] count_q, count_d;
+  logic [CountWidth-1:0] count_q, count_d, phase_cycles;
   // pend_q / pend_dir_q: the buffered pulse and its direction.
   logic                  pend_q, pend_d, pend_dir_q, pend_dir_d;
   logic                  step_q, step_d, dir_q, dir_d, overrun_q, overrun_d;
   // take: a pulse starts this clock; take_dir: its direction; took_pend: from the buffer.
-  logic                  take, take_dir, took_pend;
+  // phase_end: the phase's last clock.
+  logic                  take, take_dir, took_pend, phase_end;
+
+  always_comb begin
+    unique case (state_q)
+      StSetup: phase_cycles = setup_cycles_i;
+      StHigh:  phase_cycles = pulse_cycles_i;
+      default: phase_cycles = low_cycles_i;
+    endcase
+  end
+  assign phase_end = count_q == phase_cycles;
 
   always_comb begin
     state_d    = state_q;
-    count_d    = count_q;
+    count_d    = count_q + 1'b1;
     step_d     = step_q;
     dir_d      = dir_q;
     take       = 1'b0;
@@ -60,30 +74,25 @@ module step_stretcher #(
           if (take_dir != dir_q) begin
             dir_d   = take_dir;
             state_d = StSetup;
-            count_d = setup_cycles_i - 1'b1;
           end else begin
             step_d  = 1'b1;
             state_d = StHigh;
-            count_d = pulse_cycles_i - 1'b1;
           end
         end
       end
-      StSetup: if (count_q != '0) count_d = count_q - 1'b1;
-               else begin
+      StSetup: if (phase_end) begin
                  step_d  = 1'b1;
                  state_d = StHigh;
-                 count_d = pulse_cycles_i - 1'b1;
                end
-      StHigh: if (count_q != '0) count_d = count_q - 1'b1;
-              else begin
+      StHigh: if (phase_end) begin
                 step_d  = 1'b0;
                 state_d = StLow;
-                count_d = low_cycles_i - 1'b1;
               end
-      StLow: if (count_q != '0) count_d = count_q - 1'b1;
-             else state_d = StIdle;
+      StLow: if (phase_end) state_d = StIdle;
       default: state_d = StIdle;
     endcase
+    // A new phase starts at its first clock.
+    if (state_d != state_q) count_d = CountWidth'(1);
     // The buffer: an incoming pulse that is not taken directly waits; one more is lost.
     pend_d     = pend_q && !took_pend;
     pend_dir_d = pend_dir_q;

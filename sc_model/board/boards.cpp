@@ -3,8 +3,6 @@
 
 #include <stdexcept>
 
-#include "status_text.h"
-
 namespace ncinterp::board {
 
 const std::vector<Board>& boards() {
@@ -32,7 +30,8 @@ InterpConfig board_interp_config(const Board& b, double clock_hz) {
   InterpConfig cfg = interp_config(clock_hz);
   cfg.arch = b.arch;
   cfg.circle_mode = b.circle_mode;
-  cfg.pos_width = cfg.seq_width = cfg.offset_width = 4 * kStatusDigits;
+  // board_core's PosWidth, SeqWidth, OffsetWidth (its status line sends their low bits).
+  cfg.pos_width = cfg.seq_width = cfg.offset_width = 20;
   return cfg;
 }
 

@@ -32,7 +32,8 @@ const Board& board_named(const std::string& name);
 std::string board_names();
 
 // The interpolator as board_core builds it for the board at clock_hz: its arch and circle
-// mode, and the widths its status line shows (PosWidth, SeqWidth, OffsetWidth: 20 bits).
+// mode, and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
+// sends their low bits, sc_model/board/status_text.h).
 InterpConfig board_interp_config(const Board& b, double clock_hz);
 
 }  // namespace ncinterp::board

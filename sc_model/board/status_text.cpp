@@ -1,4 +1,4 @@
-// Parsing and wording of the board's status lines (see status_text.h).
+// Parsing, resolving and wording of the board's status lines (see status_text.h).
 #include "status_text.h"
 
 #include <cmath>
@@ -10,14 +10,14 @@
 namespace ncinterp::board {
 namespace {
 
-bool hex_field(const std::string& s, size_t pos, size_t len, uint64_t& value) {
+// A field of `len` nibble digits, each the character 0x30 + nibble.
+bool nibble_field(const std::string& s, size_t pos, size_t len, uint32_t& value) {
   if (pos + len > s.size()) return false;
   value = 0;
   for (size_t i = pos; i < pos + len; ++i) {
-    const char c = s[i];
-    const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
-    if (d < 0) return false;
-    value = value * 16 + static_cast<uint64_t>(d);
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c < 0x30 || c > 0x3f) return false;
+    value = value * 16 + (c - 0x30u);
   }
   return true;
 }
@@ -29,31 +29,74 @@ std::string mm(int64_t blu, unsigned frac_digits) {
   return buf;
 }
 
+constexpr uint64_t kBlockRange = uint64_t{1} << (4 * kStatusBlockDigits);
+constexpr uint64_t kFieldRange = uint64_t{1} << (4 * kStatusDigits);
+
+// The value nearest `last` with these low bits (a field of `range` values).
+int64_t unwrap(int64_t last, uint32_t low, uint64_t range) {
+  const uint64_t delta = (static_cast<uint64_t>(low) - static_cast<uint64_t>(last)) & (range - 1);
+  return last + (delta >= range / 2 ? static_cast<int64_t>(delta) - static_cast<int64_t>(range)
+                                    : static_cast<int64_t>(delta));
+}
+
 }  // namespace
 
 std::optional<StatusLine> parse_status_line(const std::string& line) {
-  // "K AAAAA BBBBB CCCCC": a kind letter, then three fields of kStatusDigits hex digits.
-  constexpr size_t field = 1 + kStatusDigits;
-  if (line.size() != 1 + 3 * field) return std::nullopt;
+  // "KAABBBBCCCC": a kind letter, the block field, two fields.
+  if (line.size() != 1 + kStatusBlockDigits + 2 * kStatusDigits) return std::nullopt;
   StatusLine s;
   s.kind = line[0];
   if (s.kind != kStatusBlock && s.kind != kStatusDone && s.kind != kStatusError) return std::nullopt;
-  uint64_t f[3];
-  for (size_t i = 0; i < 3; ++i)
-    if (line[1 + i * field] != ' ' || !hex_field(line, 2 + i * field, kStatusDigits, f[i])) return std::nullopt;
-  // A position field is two's complement in its 4 * kStatusDigits bits.
-  const auto position = [](uint64_t v) {
-    const uint64_t sign = uint64_t{1} << (4 * kStatusDigits - 1);
-    return static_cast<int64_t>((v ^ sign) - sign);
-  };
-  s.block = static_cast<uint32_t>(f[0]);
+  uint32_t b = 0, c = 0;
+  if (!nibble_field(line, 1, kStatusBlockDigits, s.block) ||
+      !nibble_field(line, 1 + kStatusBlockDigits, kStatusDigits, b) ||
+      !nibble_field(line, 1 + kStatusBlockDigits + kStatusDigits, kStatusDigits, c))
+    return std::nullopt;
   if (s.kind == kStatusError) {
-    s.offset = static_cast<uint32_t>(f[1]);
-    if (f[2] > 0xff) return std::nullopt;
-    s.code = static_cast<uint8_t>(f[2]);
+    if (c > 0xff) return std::nullopt;
+    s.offset = b;
+    s.code = static_cast<uint8_t>(c);
   } else {
-    s.x = position(f[1]);
-    s.y = position(f[2]);
+    s.x = b;
+    s.y = c;
+  }
+  return s;
+}
+
+StatusTracker::StatusTracker(const tape::Program& program) {
+  for (const tape::Block& b : program.blocks) ns_.push_back(b.n);
+}
+
+BoardStatus StatusTracker::resolve(const StatusLine& line, uint64_t frames_sent) {
+  BoardStatus s;
+  s.kind = line.kind;
+  s.code = line.code;
+  // N: the next block of the tape (from the last one named) with these low bits; else (a
+  // block the tape's motion blocks do not have, such as a bad one) the nearest N at or
+  // above the last one named.
+  size_t j = next_;
+  while (j < ns_.size() && ns_[j] % kBlockRange != line.block) ++j;
+  if (j < ns_.size()) {
+    s.block = ns_[j];
+    if (line.kind != kStatusError) next_ = j;
+  } else if (seen_) {
+    uint64_t n = last_n_ - last_n_ % kBlockRange + line.block;
+    if (n < last_n_) n += kBlockRange;
+    s.block = static_cast<uint32_t>(n);
+  } else {
+    s.block = line.block;
+  }
+  seen_ = true;
+  last_n_ = s.block;
+  if (line.kind == kStatusError) {
+    // The last frame sent with these low bits (the board is never a field's range behind).
+    const uint64_t back = (frames_sent - line.offset) & (kFieldRange - 1);
+    s.offset = back <= frames_sent ? frames_sent - back : line.offset;
+  } else {
+    x_ = unwrap(x_, line.x, kFieldRange);
+    y_ = unwrap(y_, line.y, kFieldRange);
+    s.x = x_;
+    s.y = y_;
   }
   return s;
 }
@@ -65,7 +108,7 @@ std::string board_error_message(uint8_t code) {
   case code:                             \
     return message;
 #define BOARD_STATUS(name, letter, meaning)
-#define BOARD_STATUS_DIGITS(n)
+#define BOARD_STATUS_DIGITS(block, field)
 #include "board_link.def"
 #undef BOARD_LINK_BYTE
 #undef BOARD_ERROR
@@ -75,14 +118,14 @@ std::string board_error_message(uint8_t code) {
   return tape_error_message(static_cast<TapeError>(code));
 }
 
-std::string describe(const StatusLine& s, unsigned frac_digits) {
+std::string describe(const BoardStatus& s, unsigned frac_digits) {
   const std::string n = "N" + std::to_string(s.block);
   if (s.kind == kStatusError)
     return "error in block " + n + " at offset " + std::to_string(s.offset) + ": " +
            board_error_message(s.code) + " (code " + std::to_string(s.code) + ")";
   const std::string pos = "X" + mm(s.x, frac_digits) + " Y" + mm(s.y, frac_digits) + " mm";
   return s.kind == kStatusDone ? "program done after block " + n + " at " + pos
-                       : "block " + n + " ended at " + pos;
+                               : "block " + n + " playing, at " + pos;
 }
 
 }  // namespace ncinterp::board

@@ -21,8 +21,14 @@ class StepStretcherModel {
 
   // One rising edge with the interpolator's step and dir.
   void tick(bool step_in, bool dir_in, const StretcherTiming& t) {
+    // count_: the clocks of the phase so far (1 at its first); the phase ends where it
+    // equals the phase's length.
+    const uint16_t length = phase_ == Phase::kSetup ? t.setup_cycles
+                            : phase_ == Phase::kHigh ? t.pulse_cycles
+                                                     : t.low_cycles;
+    const bool phase_end = count_ == length;
     Phase phase = phase_;
-    uint16_t count = count_;
+    uint16_t count = static_cast<uint16_t>(count_ + 1);
     bool step = step_, dir = dir_;
     bool take = false, took_pend = false, take_dir = dir_in;
     switch (phase_) {
@@ -37,37 +43,29 @@ class StepStretcherModel {
           if (take_dir != dir_) {
             dir = take_dir;
             phase = Phase::kSetup;
-            count = static_cast<uint16_t>(t.setup_cycles - 1);
           } else {
             step = true;
             phase = Phase::kHigh;
-            count = static_cast<uint16_t>(t.pulse_cycles - 1);
           }
         }
         break;
       case Phase::kSetup:
-        if (count_ != 0) {
-          --count;
-        } else {
+        if (phase_end) {
           step = true;
           phase = Phase::kHigh;
-          count = static_cast<uint16_t>(t.pulse_cycles - 1);
         }
         break;
       case Phase::kHigh:
-        if (count_ != 0) {
-          --count;
-        } else {
+        if (phase_end) {
           step = false;
           phase = Phase::kLow;
-          count = static_cast<uint16_t>(t.low_cycles - 1);
         }
         break;
       case Phase::kLow:
-        if (count_ != 0) --count;
-        else phase = Phase::kIdle;
+        if (phase_end) phase = Phase::kIdle;
         break;
     }
+    if (phase != phase_) count = 1;  // a new phase starts at its first clock
     bool pend = pend_ && !took_pend, pend_dir = pend_dir_, overrun = false;
     if (step_in && !(take && !took_pend)) {
       if (pend) {

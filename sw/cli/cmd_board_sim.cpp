@@ -34,7 +34,10 @@ int run(BoardSimArgs& a) {
   });
   const nlohmann::json report = board::board_sim_report(r, o);
   if (!a.report.empty()) write_file_atomically(a.report, report.dump(2) + "\n");
-  for (const std::string& line : r.status_lines) std::printf("board: %s\n", line.c_str());
+  // A B line goes out every line time while the machine moves: the count and the last.
+  if (!r.status_lines.empty())
+    std::printf("board: %zu status lines, the last \"%s\"\n", r.status_lines.size(),
+                r.status_lines.back().c_str());
   if (report["status"] != "ok") {
     std::cerr << "board-sim: "
               << (report.contains("error") ? report["error"].value("message", std::string("error"))

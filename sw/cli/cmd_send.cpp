@@ -1,7 +1,7 @@
 // `ncinterp send TAPE --port DEV [--baud B] [--flow rtscts|xonxoff]`: punches a tape into a
 // board over a serial port (docs/board.md): the tape's frames, then the EOT frame that ends
-// the tape, with flow control; prints the board's status lines in words and exits with the
-// board's verdict.
+// the tape, with flow control; prints the board's status lines in words (each block once)
+// and exits with the board's verdict.
 // Idea: termios only. The port is raw 8N1 at the baud rate; CRTSCTS (the USB-serial chip
 // stops before a byte while the board holds CTS# high) or IXON (the chip stops on the
 // board's XOFF until XON) does the flow control, so a plain write loop never overruns the
@@ -17,12 +17,14 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "command_registry.h"
@@ -88,12 +90,19 @@ int run(const SendArgs& a) {
   const size_t tape_frames = frames.size();
   frames.push_back(board::kLinkEndOfTape);
   const unsigned frac_digits = interp_config(12e6).frac_digits;
+  // The software reader's view of the tape: the blocks the board plays (to resolve the
+  // status lines' N) and the first error, if any.
+  const tape::ParseResult readback = tape::parse_frames_partial(
+      std::vector<uint8_t>(frames.begin(), frames.begin() + static_cast<long>(tape_frames)),
+      tape_format_of(interp_config(12e6)));
+  board::StatusTracker tracker(readback.program);
   Port port(a.port, speed, a.flow == "rtscts");
   const bool tty = isatty(STDERR_FILENO);
 
   size_t sent = 0;
   std::string line;
   std::string last_block = "-";
+  std::optional<uint32_t> shown_block;  // the block of the last line shown
   auto last_moved = std::chrono::steady_clock::now();  // a byte read or written
   auto last_progress = last_moved - std::chrono::seconds(1);
   bool progress_shown = false;
@@ -131,25 +140,36 @@ int run(const SendArgs& a) {
           continue;
         }
         clear_progress();
-        const std::optional<board::StatusLine> s = board::parse_status_line(line);
-        if (!s) {
+        const std::optional<board::StatusLine> raw = board::parse_status_line(line);
+        if (!raw) {
           std::printf("board: %s\n", line.c_str());
-        } else if (s->kind == 'E') {
+        } else if (raw->kind == board::kStatusError) {
           std::fflush(stdout);
-          // The software reader's words for the same error, if it finds it.
-          const tape::ParseResult rb = tape::parse_frames_partial(
-              std::vector<uint8_t>(frames.begin(), frames.begin() + static_cast<long>(tape_frames)),
-              tape_format_of(interp_config(12e6)));
-          const bool same = rb.error && rb.error->code == s->code && rb.error->block == s->block &&
-                            rb.error->offset == s->offset;
-          std::cerr << a.tape << ": block N" << s->block << ", offset " << s->offset << ": "
-                    << (same ? rb.error->message : board::board_error_message(s->code)) << "\n";
+          board::BoardStatus s = tracker.resolve(*raw, std::min(sent, tape_frames));
+          // The software reader's words and place for the same error, if it finds it (the
+          // board sends the low bits of N and the offset).
+          const tape::TapeErrorInfo* e = readback.error ? &*readback.error : nullptr;
+          const bool same = e && e->code == raw->code &&
+                            e->block % (1u << (4 * board::kStatusBlockDigits)) == raw->block &&
+                            e->offset % (1u << (4 * board::kStatusDigits)) == raw->offset;
+          if (same) {
+            s.block = e->block;
+            s.offset = e->offset;
+          }
+          std::cerr << a.tape << ": block N" << s.block << ", offset " << s.offset << ": "
+                    << (same ? e->message : board::board_error_message(raw->code)) << "\n";
           return 1;
         } else {
-          std::printf("%s\n", board::describe(*s, frac_digits).c_str());
-          std::fflush(stdout);
-          last_block = "N" + std::to_string(s->block);
-          if (s->kind == 'D') {
+          const board::BoardStatus s = tracker.resolve(*raw, std::min(sent, tape_frames));
+          // A line every line time while the machine moves: each block is shown once, at
+          // its first line, and the end.
+          if (s.kind == board::kStatusDone || shown_block != s.block) {
+            std::printf("%s\n", board::describe(s, frac_digits).c_str());
+            std::fflush(stdout);
+          }
+          shown_block = s.block;
+          last_block = "N" + std::to_string(s.block);
+          if (s.kind == board::kStatusDone) {
             std::printf("%s: %zu frames sent\n", a.tape.c_str(), tape_frames);
             return 0;
           }
@@ -168,7 +188,7 @@ int run(const SendArgs& a) {
     }
     if (tty && now - last_progress > std::chrono::milliseconds(200)) {
       last_progress = now;
-      std::fprintf(stderr, "\rsend: %zu of %zu frames, last block ended %s   ",
+      std::fprintf(stderr, "\rsend: %zu of %zu frames, block %s   ",
                    std::min(sent, tape_frames), tape_frames, last_block.c_str());
       progress_shown = true;
     }

@@ -98,7 +98,7 @@ TEST_F(BoardCli, GearLinesThroughThePtyMatchPlay) {
   // sender back.
   EXPECT_GT(board_["board"]["flow_hold_cycles"].get<uint64_t>(), 0u);
   EXPECT_NE(send_out_.find("program done after block N48"), std::string::npos) << send_out_;
-  EXPECT_NE(send_out_.find("block N1 ended"), std::string::npos) << send_out_;
+  EXPECT_NE(send_out_.find("block N1 playing"), std::string::npos) << send_out_;
 }
 
 // Arcs play on the iCEBreaker, whose core has circle mode.

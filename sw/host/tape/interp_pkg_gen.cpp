@@ -48,7 +48,7 @@ const Code kCodes[] = {
 };
 
 // The board's serial link (board_link.def).
-#define BOARD_STATUS_DIGITS(n)
+#define BOARD_STATUS_DIGITS(block, field)
 #define BOARD_STATUS(name, letter, meaning)
 #define BOARD_ERROR(name, code, message)
 #define BOARD_LINK_BYTE(name, byte, meaning) {#name, byte, meaning},
@@ -72,7 +72,12 @@ const Entry kStatusKinds[] = {
 #undef BOARD_STATUS
 #define BOARD_STATUS(name, letter, meaning)
 #undef BOARD_STATUS_DIGITS
-#define BOARD_STATUS_DIGITS(n) n +
+#define BOARD_STATUS_DIGITS(block, field) block +
+constexpr unsigned kStatusBlockDigits =
+#include "board_link.def"
+    0;
+#undef BOARD_STATUS_DIGITS
+#define BOARD_STATUS_DIGITS(block, field) field +
 constexpr unsigned kStatusDigits =
 #include "board_link.def"
     0;
@@ -234,12 +239,13 @@ std::string package(const std::string& tape_dir) {
   items(out, kChars, "Ch", 7, true, "logic [6:0]");
   out << "\n"
          "  // The board's serial link (board_link.def): its special bytes, the board's own error\n"
-         "  // codes (beside the tape errors above), the status lines' kind letters and the hex\n"
-         "  // digits of each of their three fields.\n";
+         "  // codes (beside the tape errors above), the status lines' kind letters, the digits\n"
+         "  // of their block field and of each of their two other fields.\n";
   items(out, kLinkBytes, "Link", 8, true, "logic [7:0]");
   items(out, kBoardErrors, "BoardErr", 8, true, "logic [7:0]");
   items(out, kStatusKinds, "Status", 8, true, "logic [7:0]");
-  out << "  localparam int StatusDigits = " << kStatusDigits << ";\n"
+  out << "  localparam int StatusBlockDigits = " << kStatusBlockDigits << ";\n"
+         "  localparam int StatusDigits = " << kStatusDigits << ";\n"
          "  /* verilator lint_on UNUSEDPARAM */\n"
          "\n"
          "endpackage\n";
