@@ -6,14 +6,15 @@
 # Idea: the same G-code for every binary, so two builds (before and after a change) can be
 # compared by running this script with each; a check that runs past TIMEOUT seconds is
 # stopped and reported as such.
-# Usage: bench/check/check_time.sh [NCINTERP] [SIZES] [PASSES] [TIMEOUT] [CHECK_ARGS]
+# Usage: bench/check/check_time.sh [NCINTERP] [SIZES] [PASSES] [TIMEOUT] [RUN_ARGS]
+# RUN_ARGS: options of both check and play, e.g. "--arch parallel".
 #   e.g. bench/check/check_time.sh build/ncinterp "1000 10000 50000" 1 600
 set -euo pipefail
 ncinterp=${1:-build/ncinterp}
 sizes=${2:-1000 10000 50000}
 passes=${3:-1}
 timeout_s=${4:-600}
-check_args=${5:-}
+run_args=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -28,7 +29,7 @@ for n in $sizes; do
   set +e
   # shellcheck disable=SC2086
   /usr/bin/time -f '%e %M' -o "$work/time" timeout "$timeout_s" \
-    "$ncinterp" check "$work/part.tape" --contour "$work/part.nc" --report "$work/check.json" $check_args \
+    "$ncinterp" check "$work/part.tape" --contour "$work/part.nc" --report "$work/check.json" $run_args \
     > /dev/null 2> "$work/check.err"
   rc=$?
   set -e
@@ -41,8 +42,9 @@ for n in $sizes; do
   verdict=$(jq -r .status "$work/check.json")
   err=$(jq '(.total_error.max_mm // .total_error.max) * 10000 | round / 10000' "$work/check.json")
   set +e
+  # shellcheck disable=SC2086
   /usr/bin/time -f '%e' -o "$work/ptime" timeout "$timeout_s" \
-    "$ncinterp" play "$work/part.tape" --engine golden --report "$work/play.json" > /dev/null 2>&1
+    "$ncinterp" play "$work/part.tape" --engine golden --report "$work/play.json" $run_args > /dev/null 2>&1
   prc=$?
   set -e
   play=$(tail -1 "$work/ptime")

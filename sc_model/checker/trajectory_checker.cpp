@@ -1,6 +1,8 @@
 // Pulse-path monitor (see trajectory_checker.h).
 #include "trajectory_checker.h"
 
+#include "path_bounds.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -15,12 +17,6 @@ std::string point_text(GridPoint p) {
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
 }
 
-// L1 line DDA bound (docs/interpolator.md 5.6): (|dx| + |dy|) / (2 sqrt(dx^2 + dy^2)).
-double line_bound(int64_t dx, int64_t dy) {
-  const double ax = std::fabs(static_cast<double>(dx)), ay = std::fabs(static_cast<double>(dy));
-  const double len = std::hypot(ax, ay);
-  return len > 0 ? (ax + ay) / (2.0 * len) : 0.0;
-}
 
 // Slack for comparing a floating distance with a bound (both computed from integers).
 constexpr double kBoundSlack = 1e-9;
@@ -94,9 +90,9 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
     const ProgrammedBlock& b = blocks_[k];
     BlockResult& r = results_[k];
     r.rapid = b.is_rapid();  // a G00 block on the tape is a traverse; every other one cuts
-    r.bound = b.is_arc() ? options_.arc_bound_blu + std::fabs(norm(to_vec(b.end) - b.centre) -
-                                                             norm(to_vec(b.start) - b.centre))
-                         : line_bound(b.tape.dx, b.tape.dy);
+    r.bound = b.is_arc() ? arc_path_bound(norm(to_vec(b.start) - b.centre), norm(to_vec(b.end) - b.centre),
+                                          options_.arc_bound_blu)
+                         : line_path_bound(b.tape.dx, b.tape.dy);
     r.ideal_clocks = b.tape.feed ? static_cast<double>(options_.feed_modulus) /
                                        static_cast<double>(b.tape.feed)
                                  : 0.0;

@@ -103,8 +103,9 @@ struct CheckerOptions {
   unsigned lead_bits = 0;      // log2 of the DDA's clocks per iteration (line_schedule.h)
   uint64_t rapid_step = 0;     // S of a G00 block (InterpConfig::rapid_step_on_port())
   // Bound of the pulse path around an arc block, measured against the radius changing
-  // linearly from R0 to R1: arc_bound_blu + |R1 - R0| (docs/circle-dda.md 3.2: 0.88 BLU,
-  // measured on every good arc up to W = 7 and 100000 random arcs at W = 16).
+  // linearly from R0 to R1: arc_path_bound(R0, R1, arc_bound_blu) (path_bounds.h;
+  // docs/circle-dda.md 3.2: 0.88 BLU, measured on every good arc up to W = 7 and 100000
+  // random arcs at W = 16).
   double arc_bound_blu = kCircleDdaBound;
   bool keep_pulses = true;     // record every pulse (plots, error along the path)
   size_t max_violations = 1000;  // details kept; all are counted

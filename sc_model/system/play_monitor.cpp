@@ -2,16 +2,12 @@
 // against the programmed chords and arcs, and block timing against the programmed 1/F.
 #include "play_monitor.h"
 
+#include "path_bounds.h"
+
 #include <cmath>
 #include <cstdlib>
 
 namespace ncinterp::system {
-
-double line_path_bound(int64_t dx, int64_t dy) {
-  if (dx == 0 && dy == 0) return 0.0;
-  const double ax = std::fabs(static_cast<double>(dx)), ay = std::fabs(static_cast<double>(dy));
-  return (ax + ay) / (2.0 * std::hypot(ax, ay));
-}
 
 double distance_to_segment(double px, double py, double dx, double dy) {
   const double len2 = dx * dx + dy * dy;
@@ -28,8 +24,7 @@ PathError block_path_error(const tape::Block& b, double px, double py) {
   const double i = static_cast<double>(b.i), j = static_cast<double>(b.j);
   const double r0 = std::hypot(i, j);
   const double r1 = std::hypot(static_cast<double>(b.dx) - i, static_cast<double>(b.dy) - j);
-  return {std::fabs(std::hypot(px - i, py - j) - r0),
-          std::min(kCirclePathBound, kCircleDdaBound + std::fabs(r1 - r0))};
+  return {std::fabs(std::hypot(px - i, py - j) - r0), arc_path_bound(r0, r1)};
 }
 
 namespace {

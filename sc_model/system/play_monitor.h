@@ -104,14 +104,12 @@ class PlayMonitor {
   int64_t start_x_ = 0, start_y_ = 0;  // programmed start of block cursor_
 };
 
-// The L1 path bound of a line block: (|dx| + |dy|) / (2 sqrt(dx^2 + dy^2)), 0 for a zero move.
-double line_path_bound(int64_t dx, int64_t dy);
 // Distance from point (px, py) to the segment (0,0)-(dx,dy).
 double distance_to_segment(double px, double py, double dx, double dy);
 
 // A pulse position (px, py), relative to the block's start, against the block's path: the
 // distance to the chord (line) or to the circle through the start (arc), and the bound that
-// distance must keep (line_path_bound, or the circle DDA's bounds in dda_circle.h).
+// distance must keep (path_bounds.h).
 struct PathError {
   double distance, bound;
 };

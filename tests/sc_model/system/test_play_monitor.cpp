@@ -8,6 +8,7 @@
 
 #include "frame_source.h"
 #include "interp_top.h"
+#include "path_bounds.h"
 #include "play_monitor.h"
 #include "play_run.h"
 
