@@ -13,6 +13,9 @@
 // Step timing parameters (ns) and what drivers need (docs/board.md): DRV8825 STEP high and
 // low >= 1.9 us, DIR setup and hold >= 650 ns; TB6600 (TB67S109-based modules) pulse >= 2.5 us,
 // DIR >= 5 us ahead of the pulse. The defaults suit the DRV8825 (2 us pulse, 1 us setup).
+// Golden twin: board_core's (rtl/board/board_core.sv: GoldenInterp and the board models of
+// sc_model/board/); the pins and the power-on reset have none, and `ncinterp board-sim`
+// verilates board_core with the configuration computed here (sc_model/board/boards.h).
 module board_top #(
   parameter int     ClockHz    = 12_000_000,
   parameter int     Baud       = 115_200,
