@@ -35,9 +35,9 @@ area_rows=(
   "interp_top, serial | core | BitSerial=1 | -"
   "interp_top, parallel | core | BitSerial=0 | -"
   "interp_top, serial, lines only | core | BitSerial=1 CircleMode=0 | -"
-  "interp_ice40_top, serial (the boards') | ice40 | BitSerial=1 | hx1k:tq144"
+  "interp_ice40_top, serial (the iCEBreaker's) | ice40 | BitSerial=1 | up5k:sg48"
   "interp_ice40_top, parallel | ice40 | BitSerial=0 | hx8k:ct256"
-  "interp_ice40_top, serial, lines only | ice40 | BitSerial=1 CircleMode=0 | hx1k:tq144"
+  "interp_ice40_top, serial, lines only (the iCEstick's) | ice40 | BitSerial=1 CircleMode=0 | hx1k:tq144"
   "iCEstick board (HX1K) | board | icestick | -"
   "iCEBreaker board (UP5K) | board | icebreaker | -"
 )
