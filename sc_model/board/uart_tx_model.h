@@ -1,8 +1,8 @@
-// The host's 8N1 UART transmitter (the USB-serial chip's), clock by clock: the board
-// simulation's host side drives the board's RX line with it, and the receiver's lock step
-// (tests/sc_model/board/test_board_lockstep.cpp) sends its bytes, which rtl/board/uart_rx.sv
-// must receive every one. The board's own transmitter is part of rtl/board/status_line.sv.
-// Idea: three registers (bits left to send, shift register, bit clock counter).
+// Golden twin of rtl/board/uart_tx.sv: the 8N1 UART transmitter, clock by clock.
+// Idea: the RTL's three registers (bits left to send, shift register, bit clock counter)
+// with the same update rules, compared every clock by
+// tests/sc_model/board/test_board_lockstep.cpp; the board simulation's host side uses it
+// to drive the board's RX line.
 #pragma once
 #include <cstdint>
 
