@@ -24,12 +24,10 @@
 
 namespace ncinterp {
 
-// The circle DDA's measured path bounds (docs/circle-dda.md 3.2, bench/circle), BLU: every
+// The circle DDA's measured path bound (docs/circle-dda.md 3.2, bench/circle), BLU: every
 // pulse position of a good arc is within kCircleDdaBound + |R1 - R0| of the circle through
-// the block's start about its centre (R0, R1: start and end radius), and never more than
-// kCirclePathBound off it.
+// the block's start about its centre (R0, R1: start and end radius); path_bounds.h.
 constexpr double kCircleDdaBound = 0.88;
-constexpr double kCirclePathBound = 1.0;
 
 class CircleDda {
  public:

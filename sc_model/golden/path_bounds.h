@@ -3,7 +3,6 @@
 // play monitor (play's path_within_bound) and the trajectory checker (its bound rule) use.
 // Idea: both judge the same pulses against the same promise, so they must not disagree on it.
 #pragma once
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -19,10 +18,9 @@ inline double line_path_bound(int64_t dx, int64_t dy) {
 }
 
 // An arc block, from the circle through its start (radius r0; r1 the end's radius about the
-// same centre): dda_bound + |r1 - r0|, the radius moving linearly from r0 to r1, and never
-// more than kCirclePathBound (dda_circle.h) unless a looser dda_bound is asked for.
+// same centre): dda_bound + |r1 - r0| (dda_circle.h).
 inline double arc_path_bound(double r0, double r1, double dda_bound = kCircleDdaBound) {
-  return std::min(std::max(kCirclePathBound, dda_bound), dda_bound + std::fabs(r1 - r0));
+  return dda_bound + std::fabs(r1 - r0);
 }
 
 }  // namespace ncinterp

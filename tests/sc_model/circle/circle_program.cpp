@@ -8,6 +8,7 @@
 
 #include "arc_cases.h"
 #include "dda_serial.h"
+#include "path_bounds.h"
 
 namespace ncinterp::test {
 
@@ -113,7 +114,7 @@ std::vector<uint8_t> program_frames(const tape::Program& program, unsigned inc_w
       const double r0 = std::hypot(double(b.i), double(b.j));
       const double r1 = std::hypot(double(b.dx - b.i), double(b.dy - b.j));
       dist = std::fabs(r - r0);
-      bound = std::min(kCirclePathBound, kCircleDdaBound + std::fabs(r1 - r0)) + 1e-9;
+      bound = arc_path_bound(r0, r1) + 1e-9;
     } else {
       const double dx = double(b.dx), dy = double(b.dy), len = std::hypot(dx, dy);
       double t = len == 0 ? 0 : (px * dx + py * dy) / (len * len);
