@@ -22,7 +22,8 @@ module interp_fpga_top #(
   parameter int SeqWidth       = 20,
   parameter int OffsetWidth    = 32,
   parameter int ModulusWidth   = 48,
-  parameter bit BitSerial      = 1'b1
+  parameter bit BitSerial      = 1'b1,
+  parameter bit CircleMode     = 1'b1
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -62,7 +63,8 @@ module interp_fpga_top #(
   interp_top #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
-    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial)
+    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial),
+    .CircleMode(CircleMode)
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(modulus_q), .rapid_step_i(rapid_q),

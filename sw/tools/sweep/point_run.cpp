@@ -34,18 +34,20 @@ MeasureSetup measure_setup(const DesignPoint& p, const MeasureSetup& defaults) {
   m.pos_width = static_cast<unsigned>(point_value(p, kPosWidth, defaults.pos_width));
   m.arch = point_value(p, kBitSerial, defaults.arch == Arch::kSerial ? 1 : 0) != 0 ? Arch::kSerial
                                                                                    : Arch::kParallel;
+  m.circle_mode = point_value(p, kCircleMode, 1) != 0;
+  if (!m.circle_mode) m.first_stage.arcs_circle = false;
   return m;
 }
 
-// The lock-step RTL variants are verilated with IncWidth, FracDigits and BitSerial
-// (rtl_variant.h): a point that sets any other RTL parameter has no variant.
+// The lock-step RTL variants are verilated with IncWidth, FracDigits, BitSerial and
+// CircleMode (rtl_variant.h): a point that sets any other RTL parameter has no variant.
 std::string rtl_variant_refusal(const DesignPoint& p, const MeasureSetup& defaults) {
   for (const auto& [name, value] : p) {
-    if (name == kIncWidth || name == kClock || name == kBlu || name == kBitSerial) continue;
+    if (name == kIncWidth || name == kClock || name == kBlu || name == kBitSerial || name == kCircleMode) continue;
     const bool is_default = (name == kFeedWidth && value == defaults.first_stage.feed_width) ||
                             (name == kPosWidth && value == defaults.pos_width);
     if (!is_default)
-      return "not run (the RTL variants vary IncWidth, BLU and the arch only; " + name + "=" + value_text(value) + ")";
+      return "not run (the RTL variants vary IncWidth, BLU, the arch and CircleMode only; " + name + "=" + value_text(value) + ")";
   }
   return "";
 }
@@ -135,7 +137,7 @@ PointResult run_point(const DesignPoint& p, const std::string& key, const PointS
     try {
       RtlVariantSetup variant = setup.rtl_variant;
       variant.clock_hz = m.clock_hz;
-      row.rtl = run_rtl_variant(variant, RtlVariant{row.width, frac_digits_of(m.first_stage.blu_mm), m.arch},
+      row.rtl = run_rtl_variant(variant, RtlVariant{row.width, frac_digits_of(m.first_stage.blu_mm), m.arch, m.circle_mode},
                                 tape_paths);
     } catch (const std::exception& e) {
       row.rtl.summary = std::string("RTL variant: ") + e.what();

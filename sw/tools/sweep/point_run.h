@@ -29,6 +29,11 @@ inline constexpr const char* kClock = "clock_hz";
 // interp_top's BitSerial (1 = the serial arch, 0 = the parallel one): an RTL parameter that
 // the golden model and the RTL variant take too (`--archs`).
 inline constexpr const char* kBitSerial = "BitSerial";
+// interp_top's CircleMode (1 = lines and arcs, 0 = the lines-only core of the iCEstick): an
+// RTL parameter the golden model and the RTL variant take too; a lines-only point's first
+// stage cuts every arc as chords (its tapes have no G02/G03), so its error and tape length
+// are those of the machine it describes (`--param CircleMode=0,1`).
+inline constexpr const char* kCircleMode = "CircleMode";
 // IncWidth the golden model and the RTL take.
 inline constexpr unsigned kMinWidth = 2;
 inline constexpr unsigned kMaxWidth = 32;

@@ -41,6 +41,7 @@ InputResult measure_input(const SweepInput& input, unsigned width, const Measure
   cs.reader_cps = setup.reader_cps;
   cs.pos_width = setup.pos_width;
   cs.arch = setup.arch;
+  cs.format.circle_mode = setup.circle_mode;
   cs.engine = EngineKind::kGolden;
   cs.keep_pulses = false;
   try {

@@ -29,6 +29,7 @@ struct MeasureSetup {
   double reader_cps = 1000.0;                 // tape reader, characters per second
   unsigned pos_width = 32;                    // the golden model's position counters
   Arch arch = Arch::kSerial;                  // the golden model's microarchitecture
+  bool circle_mode = true;                    // false: the lines-only core (chords only)
 };
 
 // The tape the first stage makes for the input at width W, as `ncinterp tape` writes it.
