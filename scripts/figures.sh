@@ -22,11 +22,12 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 
 # ---- What is measured -----------------------------------------------------------------
 # Area and Fmax (yosys synth_ice40 with rtl/fpga/synth_ice40.options, nextpnr-ice40), one
-# row per line: "label | kind | parameters | part:package".
+# row per line: "label | kind | parameters | part:package ...".
 #   kind core:  interp_top with every port (about 210: more than any package bonds), so
 #               synthesis only: LUT4, flip-flops, carry cells, block RAMs;
 #   kind ice40: rtl/fpga/interp_ice40_top.sv, the interpolator with the pins a board needs
-#               and the feed modulus fixed (a 12 MHz clock), synthesised and placed on the part;
+#               and the feed modulus fixed (a 12 MHz clock), synthesised once and placed on
+#               each part listed (a row per part: the cells and Fmax are the part's);
 #   kind board: `ncinterp bitstream --board NAME`, the whole board (UART, FIFO, stretchers,
 #               status line); parameters = the board's name, part from the board.
 #   parameters: NAME=VALUE ... given to chparam (the defaults: W = 16, FeedWidth 32). The
@@ -35,9 +36,10 @@ area_rows=(
   "interp_top, serial | core | BitSerial=1 | -"
   "interp_top, parallel | core | BitSerial=0 | -"
   "interp_top, serial, lines only | core | BitSerial=1 CircleMode=0 | -"
-  "interp_ice40_top, serial (the iCEBreaker's) | ice40 | BitSerial=1 | up5k:sg48"
-  "interp_ice40_top, parallel | ice40 | BitSerial=0 | hx8k:ct256"
-  "interp_ice40_top, serial, lines only (the iCEstick's) | ice40 | BitSerial=1 CircleMode=0 | hx1k:tq144"
+  "interp_ice40_top, serial | ice40 | BitSerial=1 | hx1k:tq144 up5k:sg48 hx8k:ct256"
+  "interp_ice40_top, parallel | ice40 | BitSerial=0 | hx1k:tq144 up5k:sg48 hx8k:ct256"
+  "interp_ice40_top, serial, lines only | ice40 | BitSerial=1 CircleMode=0 | hx1k:tq144 up5k:sg48 hx8k:ct256"
+  "interp_ice40_top, parallel, lines only | ice40 | BitSerial=0 CircleMode=0 | hx1k:tq144 up5k:sg48 hx8k:ct256"
   "iCEstick board (HX1K) | board | icestick | -"
   "iCEBreaker board (UP5K) | board | icebreaker | -"
 )
@@ -212,20 +214,24 @@ section_area() {
       ice40)
         yosys -q -l "$dir/yosys.log" -p "read_verilog -sv $(rtl_sources) rtl/fpga/interp_ice40_top.sv;
           $(chparams interp_ice40_top "$params") synth_ice40 $synth_options -top interp_ice40_top -json $dir/top.json; stat" >/dev/null
-        local fmaxes=() seed
-        for seed in $fmax_seeds; do
-          nextpnr-ice40 "--${part%%:*}" --package "${part#*:}" --json "$dir/top.json" \
-            --pcf-allow-unconstrained --seed "$seed" --freq 100 --timing-allow-fail \
-            >"$dir/nextpnr$seed.log" 2>&1 || true
-          fmaxes+=("$(fmax_of "$dir/nextpnr$seed.log")")
-        done
-        local first=${fmax_seeds%% *} cells
-        cells=$(cells_of "$dir/nextpnr$first.log")
-        [ -n "$cells" ] || cells="does not place: $(grep -m1 -i 'error' "$dir/nextpnr$first.log" | cut -c1-80)"
-        echo "| $label | $(stat_of "$dir/yosys.log") | $cells (${part%%:*}) | ${fmaxes[0]:--} |" >>"$area"
-        local median
-        median=$(printf '%s\n' "${fmaxes[@]}" | grep . | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
-        echo "| $label | ${part%%:*} | $(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g') | ${median:--} |" >>"$fmax" ;;
+        local one log first=${fmax_seeds%% *} cells median
+        for one in $part; do
+          local fmaxes=() seed
+          for seed in $fmax_seeds; do
+            log=$dir/nextpnr-${one%%:*}-$seed.log
+            nextpnr-ice40 "--${one%%:*}" --package "${one#*:}" --json "$dir/top.json" \
+              --pcf-allow-unconstrained --seed "$seed" --freq 100 --timing-allow-fail >"$log" 2>&1 || true
+            fmaxes+=("$(fmax_of "$log")")
+            # A design that does not fit the part does not fit with any seed.
+            grep -q "Max frequency" "$log" || break
+          done
+          log=$dir/nextpnr-${one%%:*}-$first.log
+          cells=$(cells_of "$log")
+          [ -n "$cells" ] || cells="does not place: $(grep -m1 -iE 'error|unable' "$log" | cut -c1-80)"
+          echo "| $label | $(stat_of "$dir/yosys.log") | $cells (${one%%:*}) | ${fmaxes[0]:--} |" >>"$area"
+          median=$(printf '%s\n' "${fmaxes[@]}" | grep . | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
+          echo "| $label | ${one%%:*} | $(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g') | ${median:--} |" >>"$fmax"
+        done ;;
       board)
         local out status=0 cells board_fmax
         out=$("$build/ncinterp" bitstream --board "$params" -o "$dir/$params.bin" 2>&1) || status=$?
