@@ -19,6 +19,7 @@
 #                          [--only PROOF] [--mutant MUTATION] [--no-mutants] [--list]
 #                          [--check-mutants] [--mutations FILE]
 #   --deep       the longer proofs (bigger widths, deeper BMC: the proofs file's deep columns)
+#                and the mutations marked "deep = yes"
 #   --only P     run proof P only (exit 0 if it passes)
 #   --mutant M   run mutation M only (exit 0 if its proof fails on the named assertion)
 #   --no-mutants proofs only
@@ -76,7 +77,7 @@ while read -r name harness mode depth deep_depth params deep_params rtl; do
 done <"$formal_dir/proofs"
 
 # --- the mutations file: blocks of "key = value" lines, each block opened by [name]
-declare -A m_proof m_file m_from m_to m_fails m_depth
+declare -A m_proof m_file m_from m_to m_fails m_depth m_deep
 mutant_names=()
 current=""
 while IFS= read -r line; do
@@ -95,13 +96,25 @@ while IFS= read -r line; do
     to) m_to[$current]=$value ;;
     fails) m_fails[$current]=$value ;;
     depth) m_depth[$current]=$value ;;
+    deep) m_deep[$current]=$value ;;
     *) echo "formal.sh: mutations: unknown key '$key' in [$current]" >&2; exit 2 ;;
   esac
 done <"${mutations_file:-$formal_dir/mutations}"
 
+# The mutations the run checks: a "deep = yes" one (its counterexample lies beyond the
+# default depths) only with --deep; --mutant M runs any.
+run_mutants=()
+for mut in "${mutant_names[@]}"; do
+  [ "${m_deep[$mut]:-no}" = yes ] && ((!deep)) && continue
+  run_mutants+=("$mut")
+done
+
 if ((list)); then
   printf 'proof %s\n' "${proof_names[@]}"
-  printf 'mutant %s\n' "${mutant_names[@]}"
+  printf 'mutant %s\n' "${run_mutants[@]}"
+  for mut in "${mutant_names[@]}"; do
+    [ "${m_deep[$mut]:-no}" = yes ] && echo "deep mutant $mut"
+  done
   exit 0
 fi
 
@@ -272,7 +285,7 @@ elif ((jobs > 1)); then
   ((deep)) && args+=(--deep)
   {
     for n in "${proof_names[@]}"; do echo "--only $n"; done
-    if ((mutants)); then for m in "${mutant_names[@]}"; do echo "--mutant $m"; done; fi
+    if ((mutants)); then for m in "${run_mutants[@]}"; do echo "--mutant $m"; done; fi
   } | parallel -k -j "$jobs" --colsep ' ' "$0 ${args[*]} {1} {2} | sed -n '3p'" >"$work/rows.txt" || true
   while IFS= read -r row; do
     rows+=("$row")
@@ -280,7 +293,7 @@ elif ((jobs > 1)); then
   done <"$work/rows.txt"
 else
   for n in "${proof_names[@]}"; do check_proof "$n"; done
-  if ((mutants)); then for m in "${mutant_names[@]}"; do check_mutant "$m"; done; fi
+  if ((mutants)); then for m in "${run_mutants[@]}"; do check_mutant "$m"; done; fi
 fi
 
 printf '%-48s %-12s %6s  %-36s %8s\n' property method depth result seconds

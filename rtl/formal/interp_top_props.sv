@@ -27,7 +27,12 @@ module interp_top_props #(
   parameter int PW = 4,   // PosWidth
   parameter int NW = 2,   // SeqWidth
   parameter int OW = 5,   // OffsetWidth
-  parameter bit BS = 1'b0 // BitSerial: 1 the serial arch (the boards'), 0 the parallel one
+  parameter bit BS = 1'b0, // BitSerial: 1 the serial arch (the boards'), 0 the parallel one
+  // 1: cover motion on both axes and a program played to done (step 22 in the parallel
+  // arch). The serial arch's iterations of 4 clocks put both beyond 26 steps, so its default
+  // run covers a block playing and an error after it, and leaves them to --deep
+  // (rtl/formal/proofs).
+  parameter bit CoverMotion = 1'b1
 ) (
   input logic          clk_i,
   input logic          rst_ni,
@@ -141,12 +146,21 @@ module interp_top_props #(
     end
   end
 
-  // Reachability: a program whose block moved both axes is played to done; a tape error
-  // is reported after a block has played.
+  // Reachability: a block plays; a tape error is reported after a block has played; and
+  // (CoverMotion) a block moves both axes and a program whose block moved both axes is
+  // played to done.
   always_comb begin
     if (!f_init) begin
-      cp_done_after_motion: cover (done && pos_x != '0 && pos_y != '0);
+      cp_playing: cover (busy && f_loaded_q != '0);
       cp_error_after_block: cover (error && f_loaded_q != '0);
+    end
+  end
+  if (CoverMotion) begin : g_cover_motion
+    always_comb begin
+      if (!f_init) begin
+        cp_moved_both: cover (pos_x != '0 && pos_y != '0);
+        cp_done_after_motion: cover (done && pos_x != '0 && pos_y != '0);
+      end
     end
   end
 
