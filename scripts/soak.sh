@@ -20,7 +20,11 @@ if ((cases <= shard)); then exec "${soak[@]}" --cases "$cases" --seed "$seed"; f
 
 runs="$build/soak-runs/$seed+$cases"
 mkdir -p "$runs"
-git -C "$root" rev-parse --short HEAD >"$runs/commit" 2>/dev/null || true
+# The commit the soak measures: a resumed run at another commit says so.
+commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+[ -f "$runs/commit" ] || echo "$commit" >"$runs/commit"
+[ "$(cat "$runs/commit")" = "$commit" ] ||
+  echo "soak.sh: warning: $runs began at commit $(cat "$runs/commit"), this is $commit" >&2
 shards=$(((cases + shard - 1) / shard))
 run_shard() {  # shard index: its first seed and case count; its log, written when it ends
   local i=$1 first=$((seed + $1 * shard)) n=$((cases - $1 * shard < shard ? cases - $1 * shard : shard))
