@@ -176,8 +176,9 @@ stat_of() {
        END { printf "%d | %d | %d | %d", lut, ff, carry, ram }' "$1"
 }
 # nextpnr-ice40 log: "cells of part" and the Fmax of the design's clock.
+# Both print nothing (and succeed) for a log of a design that did not place.
 cells_of() { sed -nE 's/.*ICESTORM_LC: *([0-9]+)\/ *([0-9]+).*/\1 of \2/p' "$1" | head -1; }
-fmax_of() { grep "Max frequency for clock" "$1" | tail -1 | sed -E 's/.*: ([0-9.]+) MHz.*/\1/'; }
+fmax_of() { { grep "Max frequency for clock" "$1" || true; } | tail -1 | sed -E 's/.*: ([0-9.]+) MHz.*/\1/'; }
 chparams() {
   local top=$1 p out=""
   for p in $2; do out+="chparam -set ${p%%=*} ${p#*=} $top; "; done
@@ -227,7 +228,7 @@ section_area() {
           done
           log=$dir/nextpnr-${one%%:*}-$first.log
           cells=$(cells_of "$log")
-          [ -n "$cells" ] || cells="does not place: $(grep -m1 -iE 'error|unable' "$log" | cut -c1-80)"
+          [ -n "$cells" ] || cells="does not place: $({ grep -m1 -iE 'error|unable' "$log" || true; } | cut -c1-80)"
           echo "| $label | $(stat_of "$dir/yosys.log") | $cells (${one%%:*}) | ${fmaxes[0]:--} |" >>"$area"
           median=$(printf '%s\n' "${fmaxes[@]}" | grep . | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
           echo "| $label | ${one%%:*} | $(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g') | ${median:--} |" >>"$fmax"

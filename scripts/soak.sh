@@ -6,7 +6,8 @@
 # Failing cases go to $BUILD/soak-failures/ (input, tape, report, commands to reproduce).
 # A long soak runs in shards of SOAK_SHARD cases (default 100), SOAK_JOBS at a time (default
 # 1; the first shard builds the RTL variants alone), under GNU parallel with a job log:
-# rerunning the same command resumes where it stopped, skipping the shards that finished.
+# rerunning the same command resumes where it stopped: the shards that ran to their end
+# are kept, a killed one (or one with failures: the same seeds fail again) runs again.
 # Each shard's output is in $BUILD/soak-runs/<seed>+<cases>/; the totals end the output.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -30,7 +31,9 @@ run_shard() {  # shard index: its first seed and case count; its log, written wh
   local i=$1 first=$((seed + $1 * shard)) n=$((cases - $1 * shard < shard ? cases - $1 * shard : shard))
   $soak_cmd --cases "$n" --seed "$first" >"$runs/shard-$i.log.part" 2>&1
   local rc=$?
-  mv "$runs/shard-$i.log.part" "$runs/shard-$i.log"
+  # 0: every case passed, 1: some failed; anything else (killed, crashed) is no result, and
+  # --resume-failed runs the shard again.
+  if ((rc <= 1)); then mv "$runs/shard-$i.log.part" "$runs/shard-$i.log"; else rm -f "$runs/shard-$i.log"; fi
   return $rc
 }
 export -f run_shard
@@ -38,9 +41,9 @@ export seed cases shard runs
 export soak_cmd="${soak[*]}"
 # The first shard builds the RTL variants into the cache alone; the rest may run together.
 status=0
-parallel --joblog "$runs/joblog.first" --resume -j 1 run_shard ::: 0 || status=1
+parallel --joblog "$runs/joblog.first" --resume-failed -j 1 run_shard ::: 0 || status=1
 if ((shards > 1)); then
-  parallel --joblog "$runs/joblog" --resume -j "$jobs" run_shard ::: $(seq 1 $((shards - 1))) || status=1
+  parallel --joblog "$runs/joblog" --resume-failed -j "$jobs" run_shard ::: $(seq 1 $((shards - 1))) || status=1
 fi
 # Totals per arch from the shards' summary lines: "soak ARCH: N cases, G golden runs ...,
 # R RTL lock steps (V on variants), F failed; C clocks in T s".
