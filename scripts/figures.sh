@@ -228,9 +228,13 @@ section_area() {
           done
           log=$dir/nextpnr-${one%%:*}-$first.log
           cells=$(cells_of "$log")
-          [ -n "$cells" ] || cells="does not place: $({ grep -m1 -iE 'error|unable' "$log" || true; } | cut -c1-80)"
+          if [ -z "$cells" ]; then
+            cells="does not place: $({ grep -m1 -iE 'error|unable' "$log" || true; } | cut -c1-80)"
+          elif ! grep -q "Max frequency" "$log"; then
+            cells="$cells: does not fit"
+          fi
           echo "| $label | $(stat_of "$dir/yosys.log") | $cells (${one%%:*}) | ${fmaxes[0]:--} |" >>"$area"
-          median=$(printf '%s\n' "${fmaxes[@]}" | grep . | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
+          median=$(printf '%s\n' "${fmaxes[@]}" | { grep . || true; } | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
           echo "| $label | ${one%%:*} | $(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g') | ${median:--} |" >>"$fmax"
         done ;;
       board)
