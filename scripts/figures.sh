@@ -235,7 +235,9 @@ section_area() {
           fi
           echo "| $label | $(stat_of "$dir/yosys.log") | $cells (${one%%:*}) | ${fmaxes[0]:--} |" >>"$area"
           median=$(printf '%s\n' "${fmaxes[@]}" | { grep . || true; } | sort -n | awk '{a[NR]=$0} END {if (NR) print a[int((NR+1)/2)]}')
-          echo "| $label | ${one%%:*} | $(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g') | ${median:--} |" >>"$fmax"
+          local per_seed
+          per_seed=$(IFS=,; echo "${fmaxes[*]}" | sed 's/,/, /g')
+          echo "| $label | ${one%%:*} | ${per_seed:-does not fit} | ${median:--} |" >>"$fmax"
         done ;;
       board)
         local out status=0 cells board_fmax
