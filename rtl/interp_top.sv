@@ -85,9 +85,9 @@ module interp_top #(
   localparam int ExactStepWidth = FeedWidth + IncWidth + 1;
   localparam int StepWidth = ExactStepWidth < ModulusWidth - LeadBits + 1 ? ExactStepWidth
                                                                           : ModulusWidth - LeadBits + 1;
-  // block_t, the decoded block (block_record.svh): the decoder fills it, the buffer stores
-  // it, the player reads it.
-`include "block_record.svh"
+  // block_t, the decoded block (sw/host/tape/block_record.def, the macro in
+  // 0_interp_pkg.sv): the decoder fills it, the buffer stores it, the player reads it.
+  `INTERP_BLOCK_T
   // The buffer's width, from the struct: Yosys 0.23 takes $bits of a signal only, Icarus 11
   // (bench/sim) evaluates $bits of a struct signal in a parameter wrongly (2): each gets the
   // form it reads right.

@@ -51,7 +51,7 @@ module tape_decoder #(
   // (ErrNoCircleMode), I and J are read but not kept, and there is no arc preparation.
   parameter bit CircleMode     = 1'b1
 ) (
-  // The ports are declared below, after block_t (block_record.svh), which the block's
+  // The ports are declared below, after block_t (`INTERP_BLOCK_T), which the block's
   // port has as its type and which needs the parameters above.
   clk_i, rst_ni, rapid_step_i, frame_i, frame_valid_i, tape_end_i, frame_ready_o,
   blk_valid_o, blk_ready_i, blk_o,
@@ -59,7 +59,7 @@ module tape_decoder #(
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
-`include "block_record.svh"
+  `INTERP_BLOCK_T
 
   input  logic                   clk_i;
   input  logic                   rst_ni;

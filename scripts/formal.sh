@@ -148,7 +148,7 @@ build_smt2() {
   [ -f "$rtl_dir/0_interp_pkg.sv" ] && files+=("$rtl_dir/0_interp_pkg.sv")
   for m in ${p_rtl[$name]}; do files+=("$rtl_dir/$m.sv"); done
   files+=("$formal_dir/$harness.sv")
-  script="read_verilog -formal -sv -I$rtl_dir $defines ${files[*]}"$'\n'
+  script="read_verilog -formal -sv $defines ${files[*]}"$'\n'
   if [ "${p_params[$name]}" != "-" ]; then
     local kv
     for kv in ${p_params[$name]//,/ }; do

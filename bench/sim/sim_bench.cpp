@@ -175,7 +175,7 @@ Row measure_icarus(const Options& o, const std::vector<uint8_t>& frames, uint64_
   }
   std::string log;
   const std::string compile = "iverilog -g2012 -Pinterp_tb.BitSerial=" +
-                              std::string(cfg.serial() ? "1" : "0") + " -I" + NCINTERP_RTL_DIR + " -o " + vvp.string() + " " + o.rtl_sources + " " +
+                              std::string(cfg.serial() ? "1" : "0") + " -o " + vvp.string() + " " + o.rtl_sources + " " +
                               o.tb + " 2>&1";
   if (run_command(compile, &log) != 0) throw std::runtime_error("iverilog failed:\n" + log);
   std::ostringstream cmd;

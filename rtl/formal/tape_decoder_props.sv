@@ -47,9 +47,10 @@ module tape_decoder_props #(
   localparam int KDigit = BitSerial ? NumWidth + 1 : 0;
   localparam int KLine = W + 4 > KDigit ? W + 4 : KDigit;
   localparam int LowWidth = $clog2(K + 2);
-  // The decoded block (rtl/block_record.svh), with the names of the widths it reads.
+  // The decoded block (`INTERP_BLOCK_T, sw/host/tape/block_record.def), with the names of
+  // the widths it reads.
   localparam int IncWidth = W, SeqWidth = NW, StepWidth = SW;
-`include "block_record.svh"
+  `INTERP_BLOCK_T
 
   logic              frame_ready, blk_valid;
   logic              end_blk, tape_ended, err;

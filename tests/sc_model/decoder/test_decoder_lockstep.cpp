@@ -115,7 +115,7 @@ uint64_t bits(const Port& port, unsigned lo, unsigned width) {
   return v;
 }
 
-// The held block's fields, read from blk_o in rtl/block_record.svh's order (the last
+// The held block's fields, read from blk_o in sw/host/tape/block_record.def's order (the last
 // field in the lowest bits).
 struct HeldBlock {
   uint64_t n, motion, dx_neg, dx, dy_neg, dy, i, j, step_over, step;
