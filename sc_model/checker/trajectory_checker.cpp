@@ -17,7 +17,6 @@ std::string point_text(GridPoint p) {
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
 }
 
-
 // Slack for comparing a floating distance with a bound (both computed from integers).
 constexpr double kBoundSlack = 1e-9;
 

@@ -8,7 +8,7 @@
 
 #include "arc_cases.h"
 #include "dda_serial.h"
-#include "path_bounds.h"
+#include "play_monitor.h"
 
 namespace ncinterp::test {
 
@@ -107,21 +107,9 @@ std::vector<uint8_t> program_frames(const tape::Program& program, unsigned inc_w
                                            << " at cycle " << p.cycle << " in the wrong direction";
     ++e.count[p.axis][p.plus ? 1 : 0];
     const double px = double(p.x - e.x0), py = double(p.y - e.y0);
-    double dist, bound;
-    if (is_arc(b)) {
-      // Relative to the centre (the start is at (-i, -j) from it).
-      const double r = std::hypot(px - double(b.i), py - double(b.j));
-      const double r0 = std::hypot(double(b.i), double(b.j));
-      const double r1 = std::hypot(double(b.dx - b.i), double(b.dy - b.j));
-      dist = std::fabs(r - r0);
-      bound = arc_path_bound(r0, r1) + 1e-9;
-    } else {
-      const double dx = double(b.dx), dy = double(b.dy), len = std::hypot(dx, dy);
-      double t = len == 0 ? 0 : (px * dx + py * dy) / (len * len);
-      t = std::clamp(t, 0.0, 1.0);
-      dist = std::hypot(px - t * dx, py - t * dy);
-      bound = len == 0 ? 0.0 : (std::fabs(dx) + std::fabs(dy)) / (2 * len) + 1e-9;
-    }
+    // The pulse against the block's path and the bound it must keep (play's monitor).
+    const system::PathError pe = system::block_path_error(b, px, py);
+    const double dist = pe.distance, bound = pe.bound + 1e-9;
     if (dist > bound)
       return ::testing::AssertionFailure()
              << "block N" << b.n << (is_arc(b) ? " (arc)" : " (line)") << ": pulse at cycle "
