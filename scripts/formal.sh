@@ -240,7 +240,7 @@ check_mutant() {
   start=$(date +%s.%N)
   local out="$work/mutant_$mut" rtl_copy="$work/mutant_$mut.rtl"
   rm -rf "$rtl_copy"; mkdir -p "$rtl_copy"
-  cp "$root"/rtl/*.sv "$root"/rtl/*.svh "$rtl_copy/"
+  cp "$root"/rtl/*.sv "$rtl_copy/"
   local target="$rtl_copy/$(basename "${m_file[$mut]}")" text count
   text=$(<"$target")
   count=$(grep -cF -- "${m_from[$mut]}" "$target" || true)
