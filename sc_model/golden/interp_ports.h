@@ -52,6 +52,9 @@ struct InterpConfig {
   // iterations come at S / M per clock, so its longer axis moves at between half and all
   // of the rapid rate (a line of 2^k iterations moves max(|dx|, |dy|) >= 2^(k-1) BLU).
   uint64_t rapid_step = rapid_step_for(kDefaultRapidMmMin, 3, 3);
+  // accel_step_i: the ramp step du, by which the feed generator's rate u may change per
+  // clock (accel_step_for()); 0: no ramps, every block plays at its S from its first clock.
+  uint64_t accel_step = 0;
 
   // Same elaboration parameters (everything but feed_modulus, a port): what a verilated
   // model, built with fixed parameters, requires of a configuration.
@@ -76,6 +79,18 @@ struct InterpConfig {
     double scale = 1;
     for (unsigned i = 0; i < frac_digits + feed_frac_digits; ++i) scale *= 10;
     return static_cast<uint64_t>(rapid_mm_min * scale + 0.5);
+  }
+
+  // du for an acceleration limit of accel_mm_s2: the rate u (iterations per clock times M)
+  // bounds the fastest axis's speed, u / M BLU per clock within a factor of 2, so du / M
+  // BLU per clock^2 is the limit: du = A 10^frac_digits M / f^2, rounded down (never above
+  // the limit); 0 when the limit is below one step.
+  static uint64_t accel_step_for(double accel_mm_s2, double clock_hz, unsigned frac_digits,
+                                 uint64_t feed_modulus) {
+    double blu_per_mm = 1;
+    for (unsigned i = 0; i < frac_digits; ++i) blu_per_mm *= 10;
+    return static_cast<uint64_t>(accel_mm_s2 * blu_per_mm * static_cast<double>(feed_modulus) /
+                                 (clock_hz * clock_hz));
   }
 
   static uint64_t feed_modulus_for(double clock_hz, unsigned feed_frac_digits) {

@@ -36,6 +36,9 @@ GoldenInterp::GoldenInterp(const InterpConfig& cfg)
   modulus_ = cfg.feed_modulus & low_mask(cfg.modulus_width);
   lead_bits_ = SerialDda::player_lead_bits(cfg);
   saturation_step_ = (modulus_ + (uint64_t{1} << lead_bits_) - 1) >> lead_bits_;
+  accel_step_ = cfg.accel_step & low_mask(cfg.modulus_width);
+  if (accel_step_ > 0) rate_cap_ = (saturation_step_ - 1) / accel_step_ * accel_step_;
+  require(accel_step_ == 0 || rate_cap_ > 0, "accel_step must be below the saturation step");
   pos_mask_ = low_mask(cfg.pos_width);
   pos_sign_ = 1ull << (cfg.pos_width - 1);
   reset();
@@ -48,6 +51,8 @@ void GoldenInterp::reset() {
   next_taken_cycle_ = words_end_cycle_ = 0;
   feed_step_ = phase_ = 0;
   saturated_ = false;
+  rate_ = rate_target_ = 0;
+  left_ = slack_ = 0;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
   serial_ = SerialDda(cfg_.inc_width);
@@ -79,13 +84,21 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   if (busy) {
     // A running serial iteration ignores strobes: its own pulse, words and end edges bound
     // the jump. Otherwise a saturated block strobes at every edge.
+    const bool ramped = accel_step_ > 0;
     if (player_running_)
       n = std::min(n, serial_.quiet_edges());
-    else if (saturated_)
+    else if (saturated_ && !ramped)
       return 0;
+    // With ramps only a cruise is quiet: u at its target, and each edge j stays there
+    // while slack - j u >= u.
+    if (ramped) {
+      if (rate_ != rate_target_) return 0;
+      n = std::min(n, static_cast<uint64_t>(slack_ / static_cast<__int128>(rate_)));
+    }
     // The feed generator strobes at the first edge j with phase + j S >= M (phase < M).
-    if (!saturated_ && feed_step_ > 0) {
-      const uint64_t first_strobe = (modulus_ - phase_ + feed_step_ - 1) / feed_step_;
+    const uint64_t s = ramped ? rate_ : feed_step_;
+    if ((ramped || !saturated_) && s > 0) {
+      const uint64_t first_strobe = (modulus_ - phase_ + s - 1) / s;
       n = std::min(n, first_strobe - 1);
     }
   }
@@ -94,7 +107,15 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
 
 void GoldenInterp::skip(uint64_t n) {
   cycle_ += n;
-  if (out_.busy && !player_done_ && !saturated_) phase_ += n * feed_step_;  // < M: no strobe
+  if (out_.busy && !player_done_) {
+    if (accel_step_ > 0) {  // a cruise: no strobe, u stays
+      phase_ += n * rate_;
+      left_ -= static_cast<__int128>(n) * rate_;
+      slack_ -= static_cast<__int128>(n) * rate_;
+    } else if (!saturated_) {
+      phase_ += n * feed_step_;  // < M: no strobe
+    }
+  }
   if (player_running_) serial_.skip(n);
 }
 
@@ -124,6 +145,14 @@ void GoldenInterp::load_block() {
   feed_step_ = b.step;
   saturated_ = b.step_over || feed_step_ >= saturation_step_;
   phase_ = saturated_ ? 0 : feed_step_ << lead_bits_;
+  if (accel_step_ > 0) {
+    // A ramped block starts from standstill: u = 0, the phase empty, N M phase units to go.
+    const uint64_t want = saturated_ ? rate_cap_ : std::min(feed_step_, rate_cap_);
+    rate_target_ = std::max(want / accel_step_, uint64_t{1}) * accel_step_;
+    rate_ = 0;
+    phase_ = 0;
+    left_ = slack_ = static_cast<__int128>(b.iterations) * modulus_;
+  }
   next_valid_ = false;
   out_.dir_x = dir_[0];
   out_.dir_y = dir_[1];

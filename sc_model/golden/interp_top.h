@@ -53,11 +53,14 @@ class GoldenInterp {
   uint64_t cycle() const { return cycle_; }
   // Motion blocks loaded into the player since reset (for statistics and monitors).
   uint64_t blocks_loaded() const { return loads_; }
+  // The feed generator's rate u (with ramps; S for a block without).
+  uint64_t rate() const { return accel_step_ > 0 ? rate_ : feed_step_; }
 
   void inject(const Fault& fault);
 
  private:
   inline void player_edge(bool strobe);  // the player's DDA at an edge of a playing block
+  inline void ramp_edge();               // the rate u for the next clock
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
   void status_edge();                       // done / error when the player is empty
@@ -96,6 +99,16 @@ class GoldenInterp {
   uint64_t feed_step_ = 0;  // S = F * N
   uint64_t phase_ = 0;
   bool saturated_ = false;
+  // The ramp (accel_step_ > 0, docs/motion-control-plan.md): the phase grows by rate_ (u, a
+  // multiple of du = accel_step_), which moves by at most du per clock toward
+  // rate_target_, the block's S capped at rate_cap_ (below one strobe per 2^lead_bits_
+  // clocks) and rounded down to a multiple of du. left_: phase units until the block's
+  // last strobe (N M at the load, less each clock's u); slack_: left_ less what a stop from
+  // u adds, B(u) = u + (u - du) + ... + du. Braking whenever u + B(u + du) or u + B(u)
+  // would exceed left_ keeps slack_ >= 0, so the block ends at u <= du.
+  uint64_t accel_step_ = 0, rate_cap_ = 0;
+  uint64_t rate_ = 0, rate_target_ = 0;
+  __int128 left_ = 0, slack_ = 0;
   bool dir_[2] = {false, false};
   // The player's DDA: CircleDda, or in the serial arch SerialDda. player_done_ and
   // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
@@ -134,12 +147,21 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   out_.step_x = false;
   out_.step_y = false;
   if (busy && !finishing) {
-    // Feed generator (rtl/feed_generator.sv): one DDA iteration per strobe.
-    bool strobe = saturated_;
-    if (!strobe) {
-      const uint64_t p = phase_ + feed_step_;
+    // Feed generator (rtl/feed_generator.sv): one DDA iteration per strobe; with ramps the
+    // phase grows by the rate u, which ramp_edge() moves toward the block's S.
+    bool strobe;
+    if (accel_step_ == 0) {
+      strobe = saturated_;
+      if (!strobe) {
+        const uint64_t p = phase_ + feed_step_;
+        strobe = p >= modulus_;
+        phase_ = strobe ? p - modulus_ : p;
+      }
+    } else {
+      const uint64_t p = phase_ + rate_;
       strobe = p >= modulus_;
       phase_ = strobe ? p - modulus_ : p;
+      ramp_edge();
     }
     if (strobe || player_running_) player_edge(strobe);
   } else if (finishing && !load) {
@@ -149,6 +171,28 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (load) load_block();  // Block buffer (rtl/block_buffer.sv) -> player
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
+}
+
+// The ramp's decision for the next clock, after this clock's add of u (left_ already
+// less u is what remains): up by du if a stop from u + du still fits, else stay if a stop
+// from u fits, else down by du; while the block has phase left, u stays >= du (the last
+// iterations creep at one ramp step rather than stall at u = 0).
+inline void GoldenInterp::ramp_edge() {
+  const uint64_t u = rate_, du = accel_step_;
+  const __int128 w = static_cast<__int128>(u);
+  left_ -= w;
+  if (u < rate_target_ && slack_ >= 2 * w + du) {
+    rate_ = u + du;
+    slack_ -= 2 * w + du;
+  } else if (u <= rate_target_ && slack_ >= w) {
+    slack_ -= w;
+  } else if (u > 0) {
+    rate_ = u - du;  // B(u - du) = B(u) - u: slack_ is left_ - B(u - du), unchanged
+  }
+  if (rate_ == 0 && left_ > 0) {
+    rate_ = du;
+    slack_ = left_ - du;
+  }
 }
 
 // CircleDda iterates at a strobe; SerialDda (docs/interpolator.md 5.6) starts an iteration

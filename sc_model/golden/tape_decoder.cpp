@@ -292,6 +292,7 @@ void GoldenTapeDecoder::end_of_block(uint32_t offset) {
     shifts_ = block_.is_rapid() ? 0u : bit_length(d);
     block_.step = 0;
     block_.step_over = false;
+    block_.iterations = block_.is_arc() ? 0 : uint64_t{1} << bit_length(d);
     feed_in_ = !block_.is_arc();
     state_ = State::kPrepare;
     return;
@@ -325,8 +326,10 @@ void GoldenTapeDecoder::prepare_edge() {
     return;
   }
   const ArcPrepare::Result r = arc_.edge(block_.arc_words());
-  if (r.iterate)  // F once per dry-run iteration: S = F * N
+  if (r.iterate) {  // F once per dry-run iteration: S = F * N
     add_to_step(block_.feed, block_.feed > step_mask_);
+    ++block_.iterations;
+  }
   if (!r.done) return;
   if (r.error != TapeError::kNone) {
     fail(r.error, (frame_count_ - 1) & offset_mask_);  // the block's LF, the last frame read

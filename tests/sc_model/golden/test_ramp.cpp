@@ -1,0 +1,174 @@
+// Unit tests of the golden model's feed ramp (accel_step > 0, docs/motion-control-plan.md):
+// a ramp changes only when the DDA iterates, so every block emits exactly the pulses it
+// emits without ramps, in the same order; every block starts and ends at rest; the rate
+// moves by at most one step per clock; the axes' accelerations measured from the pulse
+// times stay within the limit the step stands for.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "interp_top.h"
+
+#include "interp_test_support.h"
+
+namespace ncinterp {
+namespace {
+
+using test::frames_of;
+using test::LineBlock;
+using test::OutputRecorder;
+
+constexpr uint64_t kMaxCycles = 2'000'000'000;
+
+// A slow clock keeps the runs short; the ramp's arithmetic is the same at any clock.
+constexpr double kClockHz = 20e3;
+
+InterpConfig ramped(Arch arch, double accel_mm_s2) {
+  InterpConfig cfg = interp_config(kClockHz);
+  cfg.arch = arch;
+  cfg.accel_step = InterpConfig::accel_step_for(accel_mm_s2, kClockHz, cfg.frac_digits,
+                                                cfg.feed_modulus);
+  return cfg;
+}
+
+// A run that records the rate at every clock beside the outputs.
+struct RampRun {
+  OutputRecorder rec;
+  std::vector<uint64_t> rate;   // u after each clock
+  std::vector<bool> loaded;     // a block loaded at this clock
+  InterpOutputs out;
+};
+
+RampRun play(const InterpConfig& cfg, const std::string& tape) {
+  RampRun r;
+  GoldenInterp dut(cfg);
+  const std::vector<uint8_t> frames = frames_of(tape);
+  size_t next = 0;
+  InterpInputs in;
+  uint64_t loads = 0;
+  for (uint64_t c = 1; c <= kMaxCycles; ++c) {
+    in.frame_valid = next < frames.size();
+    in.frame = in.frame_valid ? frames[next] : 0;
+    in.tape_end = !in.frame_valid;
+    if (in.frame_valid && dut.outputs().frame_ready) ++next;
+    dut.tick(in);
+    r.rec.observe(dut.cycle(), dut.outputs());
+    r.rate.push_back(dut.rate());
+    r.loaded.push_back(dut.blocks_loaded() != loads);
+    loads = dut.blocks_loaded();
+    if (dut.outputs().done || dut.outputs().error) break;
+  }
+  r.out = dut.outputs();
+  return r;
+}
+
+const char* kArcTape =
+    "%\nG17 G21 G91 G93\n"
+    "N1 G03 X-5.000 Y5.000 I-5.000 J0.000 F120.000\n"
+    "N2 G01 X3.000 Y0.250 F400.000\n"
+    "N3 G02 X2.000 Y-2.000 I0.000 J-2.000 F300.000\n"
+    "N4 G01 X0.001 Y0.000 F5000.000\n"
+    "N5 G01 X-0.500 Y-3.000 F90.000\n"
+    "M02\n%\n";
+
+// The pulses as a sequence, without their times.
+struct PulseKey {
+  uint32_t block;
+  int axis;
+  bool plus;
+  bool operator==(const PulseKey& o) const {
+    return block == o.block && axis == o.axis && plus == o.plus;
+  }
+};
+std::vector<PulseKey> keys(const OutputRecorder& rec) {
+  std::vector<PulseKey> k;
+  for (const auto& p : rec.pulses) k.push_back({p.block, p.axis, p.plus});
+  return k;
+}
+
+std::vector<std::string> tapes() {
+  std::mt19937_64 rng(33);
+  std::vector<std::string> t{kArcTape};
+  for (int i = 0; i < 6; ++i) {
+    const InterpConfig cfg = interp_config(kClockHz);
+    std::vector<LineBlock> prog = test::random_line_program(rng, 12, cfg.feed_modulus);
+    t.push_back(test::line_tape_text(prog));
+  }
+  return t;
+}
+
+class GoldenRamp : public ::testing::TestWithParam<Arch> {};
+
+TEST_P(GoldenRamp, EveryBlockEmitsTheSamePulsesInTheSameOrderAsWithoutRamps) {
+  for (const std::string& tape : tapes()) {
+    const RampRun plain = play(ramped(GetParam(), 0), tape);
+    const RampRun ramp = play(ramped(GetParam(), 500), tape);
+    ASSERT_TRUE(plain.out.done) << tape << " error " << int(plain.out.error_code) << " block " << plain.out.error_block << " offset " << plain.out.error_offset;
+    ASSERT_TRUE(ramp.out.done) << tape;
+    EXPECT_TRUE(keys(plain.rec) == keys(ramp.rec)) << tape;
+    EXPECT_EQ(plain.out.pos_x, ramp.out.pos_x);
+    EXPECT_EQ(plain.out.pos_y, ramp.out.pos_y);
+    EXPECT_GT(ramp.rec.cycles, plain.rec.cycles) << "a ramp only stretches time";
+  }
+}
+
+TEST_P(GoldenRamp, TheRateStartsAtRestMovesOneStepPerClockAndEndsEachBlockAtMostOneStep) {
+  const InterpConfig cfg = ramped(GetParam(), 500);
+  const uint64_t du = cfg.accel_step;
+  ASSERT_GT(du, 0u);
+  for (const std::string& tape : tapes()) {
+    const RampRun r = play(cfg, tape);
+    ASSERT_TRUE(r.out.done) << tape;
+    uint64_t prev = 0;
+    for (size_t c = 0; c < r.rate.size(); ++c) {
+      const uint64_t u = r.rate[c];
+      if (r.loaded[c]) {
+        EXPECT_LE(prev, du) << "a block ends at most one step above rest, clock " << c + 1;
+        EXPECT_EQ(u, 0u) << "a block starts at rest, clock " << c + 1;
+      } else {
+        EXPECT_LE(u > prev ? u - prev : prev - u, du) << "clock " << c + 1;
+      }
+      EXPECT_EQ(u % du, 0u);
+      prev = u;
+    }
+  }
+}
+
+// Speed between two pulses of an axis: 1 BLU over their interval; acceleration: the change
+// between neighbouring intervals over the time between their middles. The allowance: the
+// DDA places an axis's pulse on an iteration, up to one iteration (M / u clocks) after its
+// ideal time, and on a clock; an error e in an interval T moves the speed 1/T by up to
+// e / T^2.
+TEST_P(GoldenRamp, EachAxisAccelerationMeasuredAtThePulsesStaysWithinTheLimit) {
+  const double accel = 500;  // mm/s^2
+  const InterpConfig cfg = ramped(GetParam(), accel);
+  const double limit = static_cast<double>(cfg.accel_step) / static_cast<double>(cfg.feed_modulus);
+  for (const std::string& tape : tapes()) {
+    const RampRun r = play(cfg, tape);
+    ASSERT_TRUE(r.out.done) << tape;
+    for (int axis = 0; axis < 2; ++axis) {
+      std::vector<uint64_t> t;
+      for (const auto& p : r.rec.pulses)
+        if (p.axis == axis) t.push_back(p.cycle);
+      for (size_t i = 1; i + 1 < t.size(); ++i) {
+        const double t1 = static_cast<double>(t[i] - t[i - 1]);
+        const double t2 = static_cast<double>(t[i + 1] - t[i]);
+        const double a = std::abs(1 / t2 - 1 / t1) / ((t1 + t2) / 2);
+        const double u = static_cast<double>(r.rate[t[i] - 1]);
+        const double e = 1 + static_cast<double>(cfg.feed_modulus) / std::max(u, 1.0);
+        const double quantum = e * (1 / (t1 * t1) + 1 / (t2 * t2)) / ((t1 + t2) / 2);
+        EXPECT_LE(a, limit + quantum) << "axis " << axis << " pulse " << i << " at clock " << t[i];
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Archs, GoldenRamp, ::testing::Values(Arch::kSerial, Arch::kParallel),
+                         [](const auto& info) { return std::string(arch_name(info.param)); });
+
+}  // namespace
+}  // namespace ncinterp
