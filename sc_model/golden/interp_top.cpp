@@ -37,8 +37,8 @@ GoldenInterp::GoldenInterp(const InterpConfig& cfg)
   lead_bits_ = SerialDda::player_lead_bits(cfg);
   saturation_step_ = (modulus_ + (uint64_t{1} << lead_bits_) - 1) >> lead_bits_;
   accel_step_ = cfg.accel_step & low_mask(cfg.modulus_width);
-  if (accel_step_ > 0) rate_cap_ = (saturation_step_ - 1) / accel_step_ * accel_step_;
-  require(accel_step_ == 0 || rate_cap_ > 0, "accel_step must be below the saturation step");
+  rate_cap_ = (modulus_ - 1) >> std::max(lead_bits_, 1u);
+  require(accel_step_ <= rate_cap_, "accel_step must be below M / 2^max(lead bits, 1)");
   pos_mask_ = low_mask(cfg.pos_width);
   pos_sign_ = 1ull << (cfg.pos_width - 1);
   reset();
@@ -52,7 +52,7 @@ void GoldenInterp::reset() {
   feed_step_ = phase_ = 0;
   saturated_ = false;
   rate_ = rate_target_ = 0;
-  left_ = slack_ = 0;
+  slack_ = 0;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
   serial_ = SerialDda(cfg_.inc_width);
@@ -89,11 +89,12 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
       n = std::min(n, serial_.quiet_edges());
     else if (saturated_ && !ramped)
       return 0;
-    // With ramps only a cruise is quiet: u at its target, and each edge j stays there
-    // while slack - j u >= u.
+    // With ramps only a cruise is quiet: u as close below its target as du allows, and
+    // each edge j stays there while K - j u > u.
     if (ramped) {
-      if (rate_ != rate_target_) return 0;
-      n = std::min(n, static_cast<uint64_t>(slack_ / static_cast<__int128>(rate_)));
+      if (rate_ == 0 || rate_ > rate_target_ || rate_ + accel_step_ <= rate_target_ || slack_ <= rate_)
+        return 0;
+      n = std::min(n, static_cast<uint64_t>((slack_ - 1) / static_cast<__int128>(rate_)));
     }
     // The feed generator strobes at the first edge j with phase + j S >= M (phase < M).
     const uint64_t s = ramped ? rate_ : feed_step_;
@@ -110,7 +111,6 @@ void GoldenInterp::skip(uint64_t n) {
   if (out_.busy && !player_done_) {
     if (accel_step_ > 0) {  // a cruise: no strobe, u stays
       phase_ += n * rate_;
-      left_ -= static_cast<__int128>(n) * rate_;
       slack_ -= static_cast<__int128>(n) * rate_;
     } else if (!saturated_) {
       phase_ += n * feed_step_;  // < M: no strobe
@@ -147,11 +147,10 @@ void GoldenInterp::load_block() {
   phase_ = saturated_ ? 0 : feed_step_ << lead_bits_;
   if (accel_step_ > 0) {
     // A ramped block starts from standstill: u = 0, the phase empty, N M phase units to go.
-    const uint64_t want = saturated_ ? rate_cap_ : std::min(feed_step_, rate_cap_);
-    rate_target_ = std::max(want / accel_step_, uint64_t{1}) * accel_step_;
+    rate_target_ = b.step_over ? rate_cap_ : std::min(feed_step_, rate_cap_);
     rate_ = 0;
     phase_ = 0;
-    left_ = slack_ = static_cast<__int128>(b.iterations) * modulus_;
+    slack_ = static_cast<__int128>(b.iterations) * modulus_;
   }
   next_valid_ = false;
   out_.dir_x = dir_[0];

@@ -100,15 +100,15 @@ class GoldenInterp {
   uint64_t phase_ = 0;
   bool saturated_ = false;
   // The ramp (accel_step_ > 0, docs/motion-control-plan.md): the phase grows by rate_ (u, a
-  // multiple of du = accel_step_), which moves by at most du per clock toward
-  // rate_target_, the block's S capped at rate_cap_ (below one strobe per 2^lead_bits_
-  // clocks) and rounded down to a multiple of du. left_: phase units until the block's
-  // last strobe (N M at the load, less each clock's u); slack_: left_ less what a stop from
-  // u adds, B(u) = u + (u - du) + ... + du. Braking whenever u + B(u + du) or u + B(u)
-  // would exceed left_ keeps slack_ >= 0, so the block ends at u <= du.
+  // multiple of du = accel_step_ from 0), which moves by at most du per clock toward
+  // rate_target_, the block's S capped at rate_cap_ (u < M / 2 and u 2^lead_bits_ < M: at
+  // most one strobe in 2 clocks, or per serial iteration). slack_: K, the phase units to
+  // the block's last strobe (N M at the load, less each clock's u) less what a stop from u
+  // adds, B(u) = u + (u - du) + ... + du. K stays >= 0 in a block (ramp_edge() brakes in
+  // time), so the block ends at u <= du.
   uint64_t accel_step_ = 0, rate_cap_ = 0;
   uint64_t rate_ = 0, rate_target_ = 0;
-  __int128 left_ = 0, slack_ = 0;
+  __int128 slack_ = 0;
   bool dir_[2] = {false, false};
   // The player's DDA: CircleDda, or in the serial arch SerialDda. player_done_ and
   // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
@@ -161,7 +161,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
       const uint64_t p = phase_ + rate_;
       strobe = p >= modulus_;
       phase_ = strobe ? p - modulus_ : p;
-      ramp_edge();
+      ramp_edge();  // after reading u: the next clock's rate
     }
     if (strobe || player_running_) player_edge(strobe);
   } else if (finishing && !load) {
@@ -173,25 +173,23 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (cycle_ == fault_cycle_) fault_edge();
 }
 
-// The ramp's decision for the next clock, after this clock's add of u (left_ already
-// less u is what remains): up by du if a stop from u + du still fits, else stay if a stop
-// from u fits, else down by du; while the block has phase left, u stays >= du (the last
-// iterations creep at one ramp step rather than stall at u = 0).
+// The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the
+// slack K before this clock's add of u: up by du if K > u + B(u + du) - B(u) + u, i.e. a stop
+// from u + du would still end before the block's last strobe (from rest always, whatever
+// the target, so a block never waits); else stay if K > u (a stop from u still fits) and u
+// is not above its target, or creep at u = du while the block has phase left (K > 0); else
+// down by du, which leaves K as it is (B(u - du) = B(u) - u). The compares are strict, as
+// the hardware's are (it keeps K as whole iterations and a fraction).
 inline void GoldenInterp::ramp_edge() {
   const uint64_t u = rate_, du = accel_step_;
-  const __int128 w = static_cast<__int128>(u);
-  left_ -= w;
-  if (u < rate_target_ && slack_ >= 2 * w + du) {
+  const __int128 w = static_cast<__int128>(u), up = 2 * w + static_cast<__int128>(du);
+  if ((u == 0 || u + du <= rate_target_) && slack_ > up) {
     rate_ = u + du;
-    slack_ -= 2 * w + du;
-  } else if (u <= rate_target_ && slack_ >= w) {
+    slack_ -= up;
+  } else if ((u <= rate_target_ && slack_ > w) || (u == du && slack_ > 0)) {
     slack_ -= w;
   } else if (u > 0) {
-    rate_ = u - du;  // B(u - du) = B(u) - u: slack_ is left_ - B(u - du), unchanged
-  }
-  if (rate_ == 0 && left_ > 0) {
-    rate_ = du;
-    slack_ = left_ - du;
+    rate_ = u - du;
   }
 }
 

@@ -22,7 +22,7 @@ using test::frames_of;
 using test::LineBlock;
 using test::OutputRecorder;
 
-constexpr uint64_t kMaxCycles = 2'000'000'000;
+constexpr uint64_t kMaxCycles = 20'000'000;  // the longest run here takes 3 M clocks
 
 // A slow clock keeps the runs short; the ramp's arithmetic is the same at any clock.
 constexpr double kClockHz = 20e3;
@@ -164,6 +164,41 @@ TEST_P(GoldenRamp, EachAxisAccelerationMeasuredAtThePulsesStaysWithinTheLimit) {
         EXPECT_LE(a, limit + quantum) << "axis " << axis << " pulse " << i << " at clock " << t[i];
       }
     }
+  }
+}
+
+// Braking on the exact slack ends a block on time: it lasts no longer than the ideal
+// trapezoid (or triangle) of its N iterations at the rate limit and target, plus a few
+// clocks of quantisation, so its last iterations never creep at one ramp step.
+TEST_P(GoldenRamp, EachBlockLastsItsIdealTrapezoidWithinAFewClocks) {
+  InterpConfig cfg = interp_config(12e6);  // a real board's clock and acceleration
+  cfg.arch = GetParam();
+  cfg.accel_step = InterpConfig::accel_step_for(500, 12e6, cfg.frac_digits, cfg.feed_modulus);
+  // 1 mm at 600 mm/min (a trapezoid), 0.01 mm at 600 mm/min (a triangle), an arc.
+  const std::string tape =
+      "%\nG17 G21 G91 G93\nN1 G01 X1.000 Y0.300 F600.000\nN2 G01 X0.010 Y0.000 F60000.000\n"
+      "N3 G02 X0.500 Y-0.500 I0.000 J-0.500 F600.000\nM02\n%\n";
+  const RampRun r = play(cfg, tape);
+  ASSERT_TRUE(r.out.done);
+  const double m = static_cast<double>(cfg.feed_modulus);
+  const double a = static_cast<double>(cfg.accel_step) / m;  // iterations per clock^2
+  std::vector<size_t> loads;
+  for (size_t c = 0; c < r.loaded.size(); ++c)
+    if (r.loaded[c]) loads.push_back(c);
+  ASSERT_EQ(loads.size(), 3u);
+  loads.push_back(r.rate.size());
+  for (size_t b = 0; b < 3; ++b) {
+    // N from the block's cruise: the largest rate it reached and its pulses' count is not
+    // enough for an arc, so take N as the phase it consumed: sum of u over its clocks / M.
+    double phase = 0, peak = 0;
+    for (size_t c = loads[b]; c < loads[b + 1]; ++c) {
+      phase += static_cast<double>(r.rate[c]);
+      peak = std::max(peak, static_cast<double>(r.rate[c]) / m);
+    }
+    const double n = std::floor(phase / m);
+    const double ideal = n >= peak * peak / a ? n / peak + peak / a : 2 * std::sqrt(n / a);
+    const double took = static_cast<double>(loads[b + 1] - loads[b]);
+    EXPECT_LE(took, ideal * 1.001 + 20) << "block " << b + 1 << ": " << took << " clocks";
   }
 }
 
