@@ -141,6 +141,7 @@ endpackage
 //   k: a line's bit length of max(|dx|, |dy|), an arc's circle DDA k
 //   grow_x: an arc: |x| grows
 //   grow_y: an arc: |y| grows
+//   iterations: N, the DDA iterations: 2^k for a line, the dry run's count for an arc
 //   step: S = F N, modulo 2^StepWidth
 `define INTERP_BLOCK_T \
   typedef struct packed { \
@@ -156,5 +157,6 @@ endpackage
     logic [KWidth-1:0]                  k; \
     logic                               grow_x; \
     logic                               grow_y; \
+    logic [IncWidth:0]                  iterations; \
     logic [StepWidth-1:0]               step; \
   } block_t;

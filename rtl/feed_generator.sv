@@ -20,18 +20,32 @@
 // Strobes then come at least 2^LeadBits clocks apart, each when the DDA is idle, as long
 // as S << LeadBits < M; a block with S << LeadBits >= M is saturated (docs/interpolator.md
 // 5.2).
-// Golden twin: the section "Feed generator" of GoldenInterp::tick()
-// (sc_model/golden/interp_top.h).
+// Ramp (Accel, with accel_step_i = du > 0; docs/motion-control-plan.md): the phase grows by a
+// rate u instead of S. u starts at 0 at the load and moves by du per clock toward the
+// target min(S, cap), cap = (M - 1) >> max(LeadBits, 1) (at most one strobe in 2 clocks,
+// or per serial iteration: no saturation). It brakes on the slack K: the phase units to the
+// block's last strobe less those a stop from u takes, B(u) = u + (u - du) + ... + du,
+// kept as whole iterations D and a fraction f, K = D M - f (no multiplier: D starts at N,
+// f at 0). Each clock: up if u + du <= target (or u = 0) and K > 2u + du; else stay if
+// u <= target and K > u, or creep if u = du and K > 0; else down. Every strobe still
+// starts the same DDA iteration, so the pulses are those without ramps; only time
+// stretches. With du = 0 (or Accel = 0) it is the generator above, clock for clock.
+// Golden twin: the section "Feed generator" of GoldenInterp::tick() and
+// GoldenInterp::ramp_edge() (sc_model/golden/interp_top.h).
 module feed_generator #(
   parameter int StepWidth    = 49,
   parameter int ModulusWidth = 48,
-  parameter int LeadBits     = 0
+  parameter int LeadBits     = 0,
+  parameter bit Accel        = 1'b0,  // the ramp's logic is built
+  parameter int IterWidth    = 17     // N, a block's iterations, < 2^IterWidth
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
   input  logic                    load_i,     // a block loads at this edge
   input  logic [StepWidth-1:0]    step_i,     // its S = F * N, modulo 2^StepWidth
   input  logic                    step_over_i, // S >= 2^StepWidth: saturated whatever M
+  input  logic [IterWidth-1:0]    iterations_i, // its N (read with Accel only)
+  input  logic [ModulusWidth-1:0] accel_step_i, // du, static; 0: no ramp
   // S of the playing block (after its load edge); only its low ModulusWidth - LeadBits
   // bits are read: a block with any higher bit set is saturated.
   /* verilator lint_off UNUSEDSIGNAL */
@@ -48,8 +62,11 @@ module feed_generator #(
   // whatever StepWidth is.
   localparam int PhaseWidth = ModulusWidth + 1;
   localparam int RunStepWidth = ModulusWidth - LeadBits;
-  localparam int CmpWidth   = StepWidth + LeadBits > ModulusWidth ? StepWidth + LeadBits
-                                                                  : ModulusWidth;
+  // The ramp's cap is (M - 1) >> CapBits (below).
+  localparam int CapBits    = LeadBits > 1 ? LeadBits : 1;
+  // The compares of S << LeadBits and S << CapBits with M.
+  localparam int CmpWidth   = StepWidth + CapBits > ModulusWidth ? StepWidth + CapBits
+                                                                 : ModulusWidth;
 
   // modulus_q: feed_modulus_i registered (static configuration; registered so that no
   // logic depends on an input combinationally). Valid from the first clock on, long before
@@ -69,6 +86,30 @@ module feed_generator #(
 
   assign lead_step = CmpWidth'(step_i) << LeadBits;
 
+  // The ramp (Accel). u <= cap = (M - 1) >> CapBits < 2^RateWidth. accel_q: du registered
+  // like M (static, no reset). capped_q: the block's S > cap (S << CapBits >= M, or S's
+  // over flag), so its target is cap. slack_it_q, slack_frac_q: the slack K as D M - f.
+  localparam int RateWidth  = ModulusWidth - CapBits;
+  logic [ModulusWidth-1:0] accel_q;
+  logic [RateWidth-1:0]    cap_q, rate_q, rate_d, du, target;
+  logic                    capped_q, capped_d, ramp_on;
+  logic [IterWidth-1:0]    slack_it_q, slack_it_d;
+  logic [ModulusWidth-1:0] slack_frac_q, slack_frac_d;
+  logic [RateWidth:0]      up_rate;                       // u + du
+  logic [ModulusWidth:0]   hold_sum;                      // f + u
+  logic [ModulusWidth+1:0] up_sum;                        // f + 2u + du
+  // f + u - M, f + 2u + du - M and - 2M: read only when they do not borrow, then < M.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [ModulusWidth:0]   hold_over;
+  logic [ModulusWidth+1:0] up_over, up_over2;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic                    hold_borrow, up_borrow, up_borrow2, hold_wrap;
+  logic [1:0]              up_wraps;
+  logic [ModulusWidth-1:0] hold_frac, up_frac;
+
+  assign du      = RateWidth'(accel_q);
+  assign ramp_on = Accel && accel_q != '0;
+
   // a >= b, decided by the highest bit where they differ. Written out because synthesis
   // builds `>=` as a subtraction on a carry chain, one logic cell a bit even when b is a
   // constant (the board's M); as logic it folds to a few LUT4s there (74 logic cells fewer
@@ -80,6 +121,25 @@ module feed_generator #(
     end
   endfunction
 
+  // The ramp's sums (used only while a ramped block runs): f + u and its wrap past M;
+  // f + 2u + du (f + u, plus u + du) and its wraps past M and 2M (f < M, 2u + du < 3M/2).
+  // K > u exactly when D exceeds the wraps of f + u (K - u = (D - wraps) M - the rest, the
+  // rest < M), and K > 2u + du when D exceeds those of f + 2u + du.
+  always_comb begin
+    target   = capped_q ? cap_q : RateWidth'(run_step_i);
+    up_rate  = {1'b0, rate_q} + {1'b0, du};
+    hold_sum = (ModulusWidth + 1)'(slack_frac_q) + (ModulusWidth + 1)'(rate_q);
+    {hold_borrow, hold_over} = {1'b0, hold_sum} - {2'b0, modulus_q};
+    hold_wrap = !hold_borrow;
+    hold_frac = hold_wrap ? hold_over[ModulusWidth-1:0] : hold_sum[ModulusWidth-1:0];
+    up_sum   = (ModulusWidth + 2)'(hold_sum) + (ModulusWidth + 2)'(up_rate);
+    {up_borrow, up_over}   = {1'b0, up_sum} - {3'b0, modulus_q};
+    {up_borrow2, up_over2} = {1'b0, up_sum} - {2'b0, modulus_q, 1'b0};
+    up_wraps = !up_borrow2 ? 2'd2 : !up_borrow ? 2'd1 : 2'd0;
+    up_frac  = !up_borrow2 ? up_over2[ModulusWidth-1:0]
+             : !up_borrow ? up_over[ModulusWidth-1:0] : up_sum[ModulusWidth-1:0];
+  end
+
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
     modulus     = PhaseWidth'(modulus_q);
@@ -88,9 +148,36 @@ module feed_generator #(
     strobe_o    = 1'b0;
     phase_d     = phase_q;
     saturated_d = saturated_q;
+    rate_d       = rate_q;
+    capped_d     = capped_q;
+    slack_it_d   = slack_it_q;
+    slack_frac_d = slack_frac_q;
     if (load_i) begin
-      phase_d     = PhaseWidth'(lead_step);
+      phase_d     = ramp_on ? '0 : PhaseWidth'(lead_step);
       saturated_d = step_over_i || at_least(lead_step, CmpWidth'(modulus_q));
+      // A ramped block starts at rest, its slack N M.
+      rate_d       = '0;
+      capped_d     = step_over_i || at_least(CmpWidth'(step_i) << CapBits,
+                                             CmpWidth'(modulus_q));
+      slack_it_d   = iterations_i;
+      slack_frac_d = '0;
+    end else if (run_i && ramp_on) begin
+      sum            = phase_q + PhaseWidth'(rate_q);
+      {borrow, over} = {1'b0, sum} - {1'b0, modulus};
+      reached        = !borrow;
+      strobe_o = reached;
+      phase_d  = reached ? over : sum;
+      if ((rate_q == '0 || up_rate <= {1'b0, target}) && slack_it_q > IterWidth'(up_wraps)) begin
+        rate_d       = up_rate[RateWidth-1:0];
+        slack_it_d   = slack_it_q - IterWidth'(up_wraps);
+        slack_frac_d = up_frac;
+      end else if ((rate_q <= target && slack_it_q > IterWidth'(hold_wrap)) ||
+                   (rate_q == du && slack_it_q != '0)) begin
+        slack_it_d   = slack_it_q - IterWidth'(hold_wrap);
+        slack_frac_d = hold_frac;
+      end else if (rate_q != '0) begin
+        rate_d = rate_q - du;  // B(u - du) = B(u) - u: K stays
+      end
     end else if (run_i) begin
       if (saturated_q) begin
         strobe_o = 1'b1;
@@ -108,12 +195,22 @@ module feed_generator #(
 
   always_ff @(posedge clk_i) begin
     modulus_q <= modulus_i;
+    accel_q   <= Accel ? accel_step_i : '0;
+    cap_q     <= RateWidth'((modulus_i - 1'b1) >> CapBits);
     if (!rst_ni) begin
-      phase_q     <= '0;
-      saturated_q <= 1'b0;
+      phase_q      <= '0;
+      saturated_q  <= 1'b0;
+      rate_q       <= '0;
+      capped_q     <= 1'b0;
+      slack_it_q   <= '0;
+      slack_frac_q <= '0;
     end else begin
-      phase_q     <= phase_d;
-      saturated_q <= saturated_d;
+      phase_q      <= phase_d;
+      saturated_q  <= saturated_d;
+      rate_q       <= rate_d;
+      capped_q     <= capped_d;
+      slack_it_q   <= slack_it_d;
+      slack_frac_q <= slack_frac_d;
     end
   end
 
@@ -127,6 +224,11 @@ module feed_generator #(
   always_ff @(posedge clk_i) begin
     if (rst_ni) begin
       a_load_not_running: assert (!(load_i && run_i));
+      // The ramp: u never passes its cap (so a serial block strobes at most once per
+      // iteration) and moves by at most du per clock.
+      a_rate_capped: assert (rate_q <= cap_q || !ramp_on);
+      a_rate_steps: assert (load_i || !ramp_on || rate_d == rate_q || rate_d == rate_q + du ||
+                            rate_d == rate_q - du);
     end
   end
 `endif

@@ -43,14 +43,19 @@ module interp_top #(
   // built in; 0 the machine of paper 000, lines only, whose first stage writes only chords:
   // an arc block is refused with error 13 (ErrNoCircleMode), and the arc's checks, dry run
   // and the DDA's arc logic are not built (the iCEstick's configuration, docs/board.md).
-  parameter bit CircleMode  = 1'b1
+  parameter bit CircleMode  = 1'b1,
+  // The feed ramp (feed_generator.sv): accel_step_i > 0 ramps every block's rate from rest
+  // and back, at most accel_step_i per clock; 0, or Accel = 0, plays every block at its S.
+  parameter bit Accel       = 1'b1
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
   // Static configuration: 60 * f_clk * 10^FeedFracDigits, and the feed step S of a rapid
-  // traverse (G00): the rapid rate in BLU/min, times 10^FeedFracDigits.
+  // traverse (G00): the rapid rate in BLU/min, times 10^FeedFracDigits; the ramp step du
+  // (InterpConfig::accel_step_for(): an acceleration limit; 0: no ramps).
   input  logic [ModulusWidth-1:0] feed_modulus_i,
   input  logic [ModulusWidth-1:0] rapid_step_i,
+  input  logic [ModulusWidth-1:0] accel_step_i,
   // Tape reader.
   input  logic [7:0]              frame_i,
   input  logic                    frame_valid_i,
@@ -149,10 +154,12 @@ module interp_top #(
   // A block loads when one waits and the player is idle or finishing the previous block.
   assign load = next_valid && (!busy_q || finished);
 
-  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits))
+  feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits),
+                   .Accel(Accel), .IterWidth(IncWidth + 1))
   u_feed (
     .clk_i, .rst_ni,
     .load_i(load), .step_i(next_block.step), .step_over_i(next_block.step_over),
+    .iterations_i(next_block.iterations), .accel_step_i,
     .run_step_i(play_step),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
@@ -209,7 +216,8 @@ module interp_top #(
     // lost (a saturated block strobes every clock and iterates as fast as the DDA can).
     always_ff @(posedge clk_i) begin
       if (rst_ni) begin
-        a_strobe_iterates: assert (!strobe || iterate || saturated);
+        a_strobe_iterates: assert (!strobe || iterate ||
+                                   (saturated && !(Accel && accel_step_i != '0)));
       end
     end
 `endif

@@ -147,6 +147,9 @@ module tape_decoder #(
   logic                 step_over_q, step_over_d, feed_in_q, feed_in_d, step_carry, feed_over,
                         step_add, rapid;
   logic [KWidth-1:0]    shifts_q, shifts_d;
+  // iter_q: the block's N, for the feed ramp: 2^k for a line (set with k), an arc's dry-run
+  // iterations counted.
+  logic [IncWidth:0]    iter_q, iter_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
   // a motion G); the block ends the program (M02/M30).
@@ -233,7 +236,7 @@ module tape_decoder #(
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_back, fail_word, word_ok,
      word_refusal,
      step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
-     step_add, rapid} = 'x;
+     step_add, rapid, iter_d} = 'x;
     word_commit = 1'b0;
     clear_block = 1'b0;
     if (update) begin
@@ -251,6 +254,7 @@ module tape_decoder #(
       step_over_d   = step_over_q;
       feed_in_d     = feed_in_q;
       shifts_d      = shifts_q;
+      iter_d        = iter_q;
       grow_x_d      = grow_x_q;
       grow_y_d      = grow_y_q;
       fail          = 1'b0;
@@ -341,6 +345,7 @@ module tape_decoder #(
                         state_d     = StPrepare;
                         step_d      = '0;
                         step_over_d = 1'b0;
+                        iter_d      = '0;
                         feed_in_d   = !interp_pkg::motion_is_arc(motion_d);
                       end
                     end else begin
@@ -389,6 +394,7 @@ module tape_decoder #(
           step_d      = step_sum;
           step_over_d = step_over_q || step_carry || feed_over;
         end
+        if (in_arc && arc_iterate) iter_d = iter_q + 1'b1;
         if (!in_arc) begin
           feed_in_d = 1'b0;
           if (!step_add) begin
@@ -398,6 +404,7 @@ module tape_decoder #(
           end else begin
             k_d      = bit_length(dx_q | dy_q);
             shifts_d = rapid ? '0 : k_d;
+            iter_d   = (IncWidth + 1)'(1) << k_d;
           end
         end else if (arc_done) begin
           if (arc_err) begin
@@ -492,6 +499,7 @@ module tape_decoder #(
       step_over_q   <= 1'b0;
       feed_in_q     <= 1'b0;
       shifts_q      <= '0;
+      iter_q        <= '0;
       grow_x_q      <= 1'b0;
       grow_y_q      <= 1'b0;
       n_seen_q      <= 1'b0;
@@ -509,6 +517,7 @@ module tape_decoder #(
       step_over_q   <= step_over_d;
       feed_in_q     <= feed_in_d;
       shifts_q      <= shifts_d;
+      iter_q        <= iter_d;
       grow_x_q      <= grow_x_d;
       grow_y_q      <= grow_y_d;
       n_seen_q      <= n_seen_d;
@@ -532,6 +541,7 @@ module tape_decoder #(
   assign blk_o.k         = k_q;
   assign blk_o.grow_x    = grow_x_q;
   assign blk_o.grow_y    = grow_y_q;
+  assign blk_o.iterations = iter_q;
   assign blk_valid_o     = state_q == StHold;
   assign end_o         = state_q == StEnd;
   assign tape_ended_o  = tape_end_q;

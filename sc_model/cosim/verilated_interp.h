@@ -35,7 +35,8 @@ class VerilatedInterp {
       : context_(std::make_unique<VerilatedContext>()),
         model_(std::make_unique<Model>(context_.get(), kScope)),
         modulus_(cfg.feed_modulus),
-        rapid_step_(cfg.rapid_step) {
+        rapid_step_(cfg.rapid_step),
+        accel_step_(cfg.accel_step) {
     if (!cfg.same_parameters(built))
       throw std::invalid_argument(
           std::string("the verilated RTL (") + arch_name(built.arch) + ", W " +
@@ -59,6 +60,7 @@ class VerilatedInterp {
     m.rst_ni = 0;
     m.feed_modulus_i = modulus_;
     m.rapid_step_i = rapid_step_;
+    m.accel_step_i = accel_step_;
     m.frame_i = 0;
     m.frame_valid_i = 0;
     m.tape_end_i = 0;
@@ -126,7 +128,7 @@ class VerilatedInterp {
 
   std::unique_ptr<VerilatedContext> context_;
   std::unique_ptr<Model> model_;
-  uint64_t modulus_, rapid_step_;
+  uint64_t modulus_, rapid_step_, accel_step_;
 };
 
 }  // namespace ncinterp

@@ -292,7 +292,7 @@ void GoldenTapeDecoder::end_of_block(uint32_t offset) {
     shifts_ = block_.is_rapid() ? 0u : bit_length(d);
     block_.step = 0;
     block_.step_over = false;
-    block_.iterations = block_.is_arc() ? 0 : uint64_t{1} << bit_length(d);
+    block_.iterations = 0;
     feed_in_ = !block_.is_arc();
     state_ = State::kPrepare;
     return;
@@ -316,6 +316,7 @@ void GoldenTapeDecoder::prepare_edge() {
     if (feed_in_) {
       const uint64_t f = block_.is_rapid() ? rapid_step_ : block_.feed;
       add_to_step(f, f > step_mask_);
+      block_.iterations = uint64_t{1} << bit_length(block_.dx | block_.dy);  // with k
       feed_in_ = false;
     } else if (shifts_ == 0) {
       state_ = State::kHold;
