@@ -42,6 +42,17 @@ Frame frame_of(const CheckOutcome& o) {
 
 }  // namespace
 
+AccelSummary accel_summary(const TrajectoryChecker& c, const CheckSetup& setup, double blu_mm) {
+  AccelSummary s;
+  s.limit_mm_s2 = setup.accel_mm_s2;
+  const double scale = blu_mm * setup.clock_hz * setup.clock_hz;  // BLU/clock^2 -> mm/s^2
+  for (const BlockResult& r : c.results()) {
+    for (int a = 0; a < 2; ++a) s.max_mm_s2[a] = std::max(s.max_mm_s2[a], r.accel[a] * scale);
+    s.worst_ratio = std::max(s.worst_ratio, r.accel_ratio);
+  }
+  return s;
+}
+
 FeedSummary feed_summary(const TrajectoryChecker& c) {
   FeedSummary s;
   for (size_t k = 0; k < c.results().size(); ++k) {
@@ -79,6 +90,13 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["status"] = o.passed() ? "pass" : "fail";
   j["blocks"] = c.blocks().size();
   j["cycles"] = c.cycles();
+  j["cycle_seconds"] = static_cast<double>(c.cycles()) / ctx.setup.clock_hz;
+  if (ctx.setup.accel_mm_s2 > 0) {
+    const AccelSummary a = accel_summary(c, ctx.setup, o.blu_mm);
+    j["acceleration"] = {{"limit_mm_s2", a.limit_mm_s2},
+                         {"max_mm_s2", {{"x", a.max_mm_s2[0]}, {"y", a.max_mm_s2[1]}}},
+                         {"worst_of_limit_and_allowance", a.worst_ratio}};
+  }
   j["gap_clocks"] = c.gap_clocks();
   j["run_seconds"] = o.seconds;
   j["done"] = o.run.last.done;
@@ -179,6 +197,12 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
   s << "  feed: worst block time vs 1/F " << fmt("%+.3g", fs.worst_relative_error * 100) << " %";
   if (fs.worst_block != SIZE_MAX) s << " (block N" << c.blocks()[fs.worst_block].tape.n << ")";
   s << ", " << fs.saturated << " saturated block(s)\n";
+  if (ctx.setup.accel_mm_s2 > 0) {
+    const AccelSummary a = accel_summary(c, ctx.setup, o.blu_mm);
+    s << "  acceleration (straight blocks): max X " << fmt("%.1f", a.max_mm_s2[0]) << ", Y "
+      << fmt("%.1f", a.max_mm_s2[1]) << " mm/s^2, limit " << fmt("%g", a.limit_mm_s2)
+      << " mm/s^2; worst " << fmt("%.2f", a.worst_ratio) << " of limit + allowance\n";
+  }
   if (c.violation_count() == 0) {
     s << "  every pulse rule holds; PASS\n";
   } else {

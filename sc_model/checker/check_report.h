@@ -26,6 +26,15 @@ struct FeedSummary {
 };
 FeedSummary feed_summary(const TrajectoryChecker& checker);
 
+// With the feed ramp: its limit, each axis's largest acceleration measured on straight
+// blocks (mm/s^2), and the largest measured/(limit + allowance) (<= 1: the rule holds).
+struct AccelSummary {
+  double limit_mm_s2 = 0.0;
+  double max_mm_s2[2] = {0.0, 0.0};
+  double worst_ratio = 0.0;
+};
+AccelSummary accel_summary(const TrajectoryChecker& checker, const CheckSetup& setup, double blu_mm);
+
 nlohmann::json check_report_json(const CheckOutcome& outcome, const ReportContext& context);
 std::string check_summary_text(const CheckOutcome& outcome, const ReportContext& context);
 

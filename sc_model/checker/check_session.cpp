@@ -29,7 +29,7 @@ uint64_t cycle_budget(const std::vector<ProgrammedBlock>& blocks, size_t frames,
                                                          std::llabs(b.tape.i), std::llabs(b.tape.j)}));
     const LineSchedule s(big, 0, line_step(b.tape, cfg), cfg.feed_modulus);
     const uint64_t iteration = cfg.serial() ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
-    total += std::max(s.duration(), 4 * s.iterations() * iteration + 4) + 4;
+    total += std::max(s.duration(), 4 * s.iterations() * iteration + 4) + 4 + cfg.ramp_clocks(4 * s.iterations());
     if (b.is_arc()) total += ArcPrepare::clocks(cfg.inc_width, cfg.serial(), 4 * s.iterations());
   }
   return total + total / 8;
@@ -85,7 +85,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   out.program = tape::parse_frames(frames, setup.format);
   std::vector<ProgrammedBlock> blocks = lay_out(out.program);
 
-  InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min);
+  InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
   cfg.pos_width = setup.pos_width;
   cfg.arch = setup.arch;
   if (contour) {
@@ -101,6 +101,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.schedule = setup.schedule;
   co.lead_bits = SerialDda::player_lead_bits(cfg);
   co.rapid_step = cfg.rapid_step_on_port();
+  co.accel_step = cfg.accel_step;
   co.arc_bound_blu = setup.arc_bound_blu;
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);

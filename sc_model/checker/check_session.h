@@ -30,6 +30,7 @@ struct CheckSetup {
   unsigned pos_width = 32;         // the position counters' width (InterpConfig::pos_width)
   Arch arch = Arch::kSerial;       // the microarchitecture both engines play
   double rapid_mm_min = kDefaultRapidMmMin;  // the machine's rapid rate (G00)
+  double accel_mm_s2 = 0;          // the feed ramp's limit (0: no ramps)
   EngineKind engine = EngineKind::kGolden;
   double tol_mm = 0.01;            // delta: the total error's bound
   // Absolute grid point of the tape start (mm); unset: the contour's start on the grid

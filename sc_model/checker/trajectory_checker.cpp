@@ -39,6 +39,7 @@ const char* rule_name(Rule rule) {
     case Rule::kDuration: return "duration";
     case Rule::kSequence: return "sequence";
     case Rule::kComplete: return "complete";
+    case Rule::kAcceleration: return "accel";
     case Rule::kTotalError: return "tolerance";
   }
   return "?";
@@ -147,7 +148,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   // Block boundaries: a load shows as busy rising or block_n_o changing; two consecutive
   // line blocks with the same N are told apart by the documented block time.
   bool load = prev_.loads(o);
-  if (!load && o.busy && active_ && options_.schedule && timed(blocks_[cur_]) &&
+  if (!load && o.busy && active_ && options_.schedule && !ramped() && timed(blocks_[cur_]) &&
       cycle == results_[cur_].load_cycle + schedule_.duration() && cur_ + 1 < blocks_.size() &&
       blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n)
     load = true;
@@ -174,7 +175,10 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
     }
     if (pulsed) on_pulse(cycle, step, dir);
     if (options_.schedule && timed(b)) {
-      check_schedule(cycle, pulsed);
+      if (!ramped())
+        check_schedule(cycle, pulsed);
+      else if (pulsed)
+        check_order(cycle);
       if (o.feed_saturated != schedule_.saturated())
         report(Rule::kDuration, cycle,
                std::string("feed_saturated_o = ") + (o.feed_saturated ? "1" : "0") +
@@ -193,7 +197,8 @@ void TrajectoryChecker::observe_quiet(uint64_t cycle, const InterpOutputs& o) {
 }
 
 uint64_t TrajectoryChecker::quiet_limit() const {
-  if (!active_ || !options_.schedule || !timed(blocks_[cur_])) return UINT64_MAX;
+  // With the ramp nothing is due at a documented clock: the rules look at the pulses.
+  if (!active_ || !options_.schedule || ramped() || !timed(blocks_[cur_])) return UINT64_MAX;
   const uint64_t load = results_[cur_].load_cycle;
   uint64_t next = load + schedule_.duration();  // the same-N load rule looks at this clock
   if (iterations_ < schedule_.iterations()) {
@@ -221,6 +226,7 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
   expected_dir_[0] = b.is_arc() ? b.tape.dx > 0 : b.tape.dx >= 0;
   expected_dir_[1] = b.is_arc() ? b.tape.dy > 0 : b.tape.dy >= 0;
   iterations_ = 0;
+  events_ = 0;
   if (timed(b))
     schedule_ = schedule_of(b);
   else
@@ -245,10 +251,10 @@ void TrajectoryChecker::end_block(uint64_t cycle) {
                  std::to_string(d[a] >= 0 ? progress_[a] : -progress_[a]) + " BLU, programmed " +
                  std::to_string(d[a]));
   }
-  if (options_.schedule && timed(b) && r.clocks != schedule_.duration())
+  if (options_.schedule && timed(b) && (ramped() ? r.clocks < schedule_.duration() : r.clocks != schedule_.duration()))
     report(Rule::kDuration, cycle,
            "block took " + std::to_string(r.clocks) + " clocks, documented " +
-               std::to_string(schedule_.duration()));
+               (ramped() ? "at least " : "") + std::to_string(schedule_.duration()));
   active_ = false;
   reported_ = 0;
 }
@@ -310,6 +316,78 @@ void TrajectoryChecker::check_schedule(uint64_t cycle, bool pulsed) {
                  " pulses, documented " + std::to_string(expected) + " after iteration " +
                  std::to_string(iterations_) + " of " + std::to_string(schedule_.iterations()));
   }
+}
+
+void TrajectoryChecker::check_order(uint64_t cycle) {
+  // The DDA's next iteration that pulses an axis: an axis of d > 0 with c pulses so far
+  // pulses next at the first j with floor((2^(k-1) + j d) / 2^k) > c.
+  const ProgrammedBlock& b = blocks_[cur_];
+  const uint64_t d[2] = {static_cast<uint64_t>(std::llabs(b.tape.dx)), static_cast<uint64_t>(std::llabs(b.tape.dy))};
+  uint64_t next = UINT64_MAX;
+  for (int a = 0; a < 2; ++a) {
+    const uint64_t c = schedule_.pulses(d[a], iterations_);
+    if (d[a] == 0 || c >= d[a]) continue;
+    uint64_t j = iterations_ + 1;
+    // Solve h + j d >= (c + 1) K for j, then step over the rounding.
+    const uint64_t kpow = schedule_.iterations(), half = kpow / 2;
+    const unsigned __int128 need = static_cast<unsigned __int128>(c + 1) * kpow;
+    if (need > half) j = std::max<uint64_t>(j, static_cast<uint64_t>((need - half + d[a] - 1) / d[a]));
+    while (j > iterations_ + 1 && schedule_.pulses(d[a], j - 1) > c) --j;
+    while (schedule_.pulses(d[a], j) <= c) ++j;
+    next = std::min(next, j);
+  }
+  if (next == UINT64_MAX || next > schedule_.iterations()) {
+    report(Rule::kSchedule, cycle, "a pulse after the block's last pulsing iteration");
+    return;
+  }
+  iterations_ = next;
+  for (int a = 0; a < 2; ++a) {
+    const uint64_t expected = schedule_.pulses(d[a], iterations_);
+    if (progress_[a] != static_cast<int64_t>(expected))
+      report(Rule::kSchedule, cycle,
+             std::string("axis ") + axis_name(a) + ": " + std::to_string(progress_[a]) +
+                 " pulses, the DDA's order gives " + std::to_string(expected) + " at its iteration " +
+                 std::to_string(iterations_) + " of " + std::to_string(schedule_.iterations()));
+  }
+  check_acceleration(cycle);
+}
+
+void TrajectoryChecker::check_acceleration(uint64_t cycle) {
+  // Iteration rate over spans between pulsing iterations: r = dj / dt; its change over the
+  // time between the middles of two spans is the path's acceleration in iterations per
+  // clock^2; an axis of d moves d / 2^k BLU an iteration. Each time is exact to a clock,
+  // which moves r by up to dj / dt^2: a span lasts until dt^3 limit >= 2 dj, which keeps
+  // that allowance about the limit itself.
+  const double limit = static_cast<double>(options_.accel_step) / static_cast<double>(options_.feed_modulus);
+  if (events_ > 0) {
+    const double dt = static_cast<double>(cycle - event_t_[events_ - 1]);
+    if (dt * dt * dt * limit < 2.0 * static_cast<double>(iterations_ - event_j_[events_ - 1])) return;
+  }
+  if (events_ == 2) {
+    const double j0 = static_cast<double>(event_j_[0]), j1 = static_cast<double>(event_j_[1]);
+    const double t0 = static_cast<double>(event_t_[0]), t1 = static_cast<double>(event_t_[1]);
+    const double j2 = static_cast<double>(iterations_), t2 = static_cast<double>(cycle);
+    const double dt1 = t1 - t0, dt2 = t2 - t1, mid = (dt1 + dt2) / 2;
+    const double r1 = (j1 - j0) / dt1, r2 = (j2 - j1) / dt2;
+    const double rate_accel = std::abs(r2 - r1) / mid;
+    const double allowance = ((j1 - j0) / (dt1 * dt1) + (j2 - j1) / (dt2 * dt2)) / mid;
+    const ProgrammedBlock& b = blocks_[cur_];
+    BlockResult& r = results_[cur_];
+    const double kpow = static_cast<double>(schedule_.iterations());
+    const double share[2] = {static_cast<double>(std::llabs(b.tape.dx)) / kpow,
+                             static_cast<double>(std::llabs(b.tape.dy)) / kpow};
+    for (int a = 0; a < 2; ++a) r.accel[a] = std::max(r.accel[a], rate_accel * share[a]);
+    r.accel_ratio = std::max(r.accel_ratio, rate_accel / (limit + allowance));
+    if (rate_accel > limit + allowance)
+      report(Rule::kAcceleration, cycle,
+             "iteration rate changes by " + std::to_string(rate_accel) + " per clock^2, limit " +
+                 std::to_string(limit) + " + allowance " + std::to_string(allowance));
+    event_j_[0] = event_j_[1], event_t_[0] = event_t_[1];
+  } else {
+    ++events_;
+  }
+  event_j_[events_ - 1] = iterations_;
+  event_t_[events_ - 1] = cycle;
 }
 
 void TrajectoryChecker::finish(const InterpOutputs& o) {

@@ -11,11 +11,17 @@
 //   count     an axis never emits more pulses than its increment;
 //   schedule  (G01 blocks) the pulse count of each axis equals the documented DDA count
 //             for the iterations due by this clock (line_schedule.h): a lost, extra, early
-//             or late pulse is reported at the clock where it happens;
+//             or late pulse is reported at the clock where it happens; with the feed ramp
+//             (CheckerOptions::accel_step) the counts at each pulse are those of the
+//             DDA's next pulsing iteration: the pulses without ramps, in their order;
 //   bound     each pulse position is within the interpolator's bound of the block's path;
 //   endpoint  at the block's end each axis has emitted exactly its increment;
 //   duration  (G01 blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
-//             and feed_saturated_o says whether F << k >= M;
+//             at least that with the ramp, and feed_saturated_o says whether F << k >= M;
+//   accel     (straight blocks, with the ramp) no axis's acceleration exceeds the limit
+//             du / M BLU per clock^2 (times |d| / 2^k for the axis of d), measured from
+//             the times of the iterations that pulse, plus the allowance of one clock
+//             per iteration time (a strobe comes on the clock after the phase passes M);
 //   sequence  blocks load in tape order, block_n_o showing each block's N;
 //   complete  the run reaches the end of program with every block played.
 // Each rule reports its first failure per block with the block, the clock and the position.
@@ -43,6 +49,7 @@ enum class Rule : uint8_t {
   kDuration,
   kSequence,
   kComplete,
+  kAcceleration,
   kTotalError,  // set by the caller's tolerance check, not by observe()
 };
 const char* rule_name(Rule rule);
@@ -82,6 +89,10 @@ struct BlockResult {
   double outside_excursion = 0.0;
   double bound = 0.0;      // interpolator bound used for the path rule, BLU
   bool saturated = false;  // lines: needs more iterations than clocks (documented)
+  // With the ramp: each axis's largest acceleration measured (BLU per clock^2), and the
+  // largest ratio of a measured acceleration to the limit plus its allowance.
+  double accel[2] = {0.0, 0.0};
+  double accel_ratio = 0.0;
   double ideal_clocks = 0.0;  // 1/F in clocks
   uint64_t clocks = 0;        // measured, load edge to the next load edge / busy falling
   double feed_relative_error() const {
@@ -102,6 +113,10 @@ struct CheckerOptions {
   bool schedule = true;        // the schedule and duration rules for line blocks
   unsigned lead_bits = 0;      // log2 of the DDA's clocks per iteration (line_schedule.h)
   uint64_t rapid_step = 0;     // S of a G00 block (InterpConfig::rapid_step_on_port())
+  // The feed ramp's step du (InterpConfig::accel_step; 0: no ramps). Ramped, a line's
+  // schedule rule checks the order of its pulses (the DDA's, at any times), its duration
+  // rule that it takes at least the programmed time, and the acceleration rule holds.
+  uint64_t accel_step = 0;
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_path_bound(R0, R1, arc_bound_blu) (path_bounds.h;
   // docs/circle-dda.md 3.2: 0.88 BLU, measured on every good arc up to W = 7 and 100000
@@ -151,6 +166,9 @@ class TrajectoryChecker {
   void end_block(uint64_t cycle);
   void on_pulse(uint64_t cycle, const bool step[2], const bool dir[2]);
   void check_schedule(uint64_t cycle, bool pulsed);
+  void check_order(uint64_t cycle);           // the schedule rule with the ramp
+  void check_acceleration(uint64_t cycle);    // at an iteration that pulses, with the ramp
+  bool ramped() const { return options_.accel_step > 0; }
   void report(Rule rule, uint64_t cycle, std::string detail);
 
   std::vector<ProgrammedBlock> blocks_;
@@ -175,6 +193,9 @@ class TrajectoryChecker {
   unsigned __int128 step_of(const ProgrammedBlock& b) const;
   LineSchedule schedule_of(const ProgrammedBlock& b) const;
   uint64_t iterations_ = 0;      // documented iterations due by the last clock
+  // With the ramp: the last two pulsing iterations of the block (index, cycle).
+  uint64_t event_j_[2] = {0, 0}, event_t_[2] = {0, 0};
+  int events_ = 0;
   uint32_t reported_ = 0;        // rules already reported in this block (bit per rule)
 
   std::vector<Violation> violations_;

@@ -11,7 +11,8 @@ Arch parse_arch(const std::string& name) {
   throw std::invalid_argument("unknown arch '" + name + "' (serial or parallel)");
 }
 
-InterpConfig interp_config(double clock_hz, const tape::Format& format, double rapid_mm_min) {
+InterpConfig interp_config(double clock_hz, const tape::Format& format, double rapid_mm_min,
+                           double accel_mm_s2) {
   InterpConfig cfg;
   cfg.inc_width = format.inc_width;
   cfg.frac_digits = format.frac_digits;
@@ -21,6 +22,14 @@ InterpConfig interp_config(double clock_hz, const tape::Format& format, double r
   cfg.circle_mode = format.circle_mode;
   cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
   cfg.rapid_step = InterpConfig::rapid_step_for(rapid_mm_min, format.frac_digits, format.feed_frac_digits);
+  if (accel_mm_s2 > 0) {
+    cfg.accel_step = InterpConfig::accel_step_for(accel_mm_s2, clock_hz, format.frac_digits, cfg.feed_modulus);
+    if (cfg.accel_step == 0)
+      throw std::invalid_argument("--accel " + std::to_string(accel_mm_s2) +
+                                  " mm/s^2 is below one ramp step at this clock (" +
+                                  std::to_string(InterpConfig::accel_step_for(1, clock_hz, format.frac_digits, cfg.feed_modulus)) +
+                                  " steps per mm/s^2)");
+  }
   return cfg;
 }
 

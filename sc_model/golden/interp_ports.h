@@ -7,6 +7,7 @@
 // (TapeError) are the tape format's, in sw/host/tape/tape_errors.def. docs/architecture.md
 // explains each field.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -67,6 +68,13 @@ struct InterpConfig {
   }
 
   bool serial() const { return arch == Arch::kSerial; }
+  // Clocks a ramp adds at most to a block of `iterations` beside its programmed time: the
+  // triangle up and down, 2 sqrt(N M / du), and the climb to the rate's cap, M / (2 du).
+  uint64_t ramp_clocks(uint64_t iterations) const {
+    if (accel_step == 0) return 0;
+    const double m = static_cast<double>(feed_modulus), du = static_cast<double>(accel_step);
+    return static_cast<uint64_t>(2 * std::sqrt(static_cast<double>(iterations) * m / du) + m / (2 * du)) + 4;
+  }
   // rapid_step as the port holds it (ModulusWidth bits).
   uint64_t rapid_step_on_port() const {
     return modulus_width >= 64 ? rapid_step : rapid_step & ((uint64_t{1} << modulus_width) - 1);
@@ -119,8 +127,9 @@ inline unsigned __int128 line_step(const tape::Block& b, const InterpConfig& cfg
 // widths, the other parameters at their defaults; the feed modulus for the clock, the rapid
 // step for rapid_mm_min. With the default format, the default machine (the verilated RTL's
 // parameters).
+// accel_mm_s2 > 0: the feed ramp at that acceleration limit (accel_step_for()); 0: none.
 InterpConfig interp_config(double clock_hz, const tape::Format& format = {},
-                           double rapid_mm_min = kDefaultRapidMmMin);
+                           double rapid_mm_min = kDefaultRapidMmMin, double accel_mm_s2 = 0);
 // The tape format an interpolator with `cfg` decodes (the inverse of interp_config).
 tape::Format tape_format_of(const InterpConfig& cfg);
 

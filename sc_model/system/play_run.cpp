@@ -45,6 +45,7 @@ uint64_t cycle_limit_for(const tape::Program& program, size_t frames, uint64_t c
     // Saturated, one iteration per clock (per 2P clocks with BitSerial: SerialDda).
     const uint64_t iteration = cfg.serial() ? SerialDda::iteration_clocks(cfg.inc_width) : 1;
     total += std::max(iterations * iteration + 1, programmed) + prepare + 3;
+    total += cfg.ramp_clocks(iterations);
   }
   return 2 * total + 100000;
 }
@@ -70,7 +71,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
 
   PlayResult r;
-  r.config = interp_config(opt.clock_hz, {}, opt.rapid_mm_min);  // the default widths, in the chosen arch
+  r.config = interp_config(opt.clock_hz, {}, opt.rapid_mm_min, opt.accel_mm_s2);  // the default widths, in the chosen arch
   r.config.arch = opt.arch;
   r.clock_hz = opt.clock_hz;
   r.reader_cps = opt.reader_cps;

@@ -22,6 +22,7 @@ struct PlayOptions {
   EngineKind engine = EngineKind::kGolden;
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
+  double accel_mm_s2 = 0;  // the feed ramp's limit; 0: none
   double clock_hz = 1e6;
   double reader_cps = 1000;  // tape reader, characters (frames) per second
   std::string vcd_path;      // empty: no VCD

@@ -32,6 +32,7 @@ struct CheckArgs {
   std::string engine = "golden";
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
+  double accel_mm_s2 = 0;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
   std::string svg, report;
@@ -69,6 +70,7 @@ int run(const CheckArgs& a) {
   setup.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
   setup.arch = a.arch;
   setup.rapid_mm_min = a.rapid_mm_min;
+  setup.accel_mm_s2 = a.accel_mm_s2;
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";
@@ -129,6 +131,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
       ->capture_default_str();
   add_arch_option(cmd, args->arch);
   add_rapid_option(cmd, args->rapid_mm_min);
+  add_accel_option(cmd, args->accel_mm_s2);
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();

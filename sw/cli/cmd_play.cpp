@@ -32,6 +32,7 @@ struct PlayArgs {
   std::string engine = "golden";
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
+  double accel_mm_s2 = 0;
   std::string vcd, vcd_from, vcd_to, report;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
@@ -51,6 +52,7 @@ int run(const PlayArgs& a) {
   opt.engine = a.engine == "rtl" ? EngineKind::kRtl : EngineKind::kGolden;
   opt.arch = a.arch;
   opt.rapid_mm_min = a.rapid_mm_min;
+  opt.accel_mm_s2 = a.accel_mm_s2;
   opt.clock_hz = a.clock_hz;
   opt.reader_cps = a.reader_cps;
   opt.vcd_path = a.vcd;
@@ -121,6 +123,7 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   add_arch_option(cmd, args->arch);
   add_rapid_option(cmd, args->rapid_mm_min);
+  add_accel_option(cmd, args->accel_mm_s2);
   cmd->add_option("--vcd", args->vcd, "Write waves (VCD) to this file");
   const auto bound_check = [](const std::string& s) -> std::string {
     try {

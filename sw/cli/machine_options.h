@@ -1,6 +1,6 @@
 // The options that choose the machine a command plays on, one definition each, for every
 // command that plays a tape (play, cosim, check, board-sim, sweep's grid and the soak read
-// the same words): --arch, --rapid.
+// the same words): --arch, --rapid, --accel.
 // Idea: a user learns an option once; its name, values, default and help are written here
 // only, and a command adds it with one call.
 #pragma once
@@ -19,6 +19,18 @@ inline CLI::Option* add_rapid_option(CLI::App* cmd, double& rapid_mm_min) {
                    "The machine's rapid rate, mm/min: a G00 traverse's longer axis moves at half "
                    "to all of it (docs/tape-format.md)")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+// --accel MM_PER_S2 into `accel_mm_s2`: the acceleration limit of the feed ramp; 0 (the
+// default): no ramps, every block plays at its programmed rate from its first clock.
+inline CLI::Option* add_accel_option(CLI::App* cmd, double& accel_mm_s2) {
+  return cmd
+      ->add_option("--accel", accel_mm_s2,
+                   "Acceleration limit, mm/s^2: every block ramps its rate from rest and back to "
+                   "rest within it (exact stop), the same pulses in the same order; 0: no ramps "
+                   "(docs/motion-control.md)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 }
 

@@ -68,6 +68,44 @@ TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheSerialPlayer) {
   clean_random_line_programs_pass_every_rule(Arch::kSerial);
 }
 
+// With the feed ramp (--accel) the same programs pass every rule, the schedule rule now
+// the DDA's order of pulses, the duration rule at least the programmed time, and the
+// acceleration rule; a run ramped 8 times steeper than the checker's limit fails the
+// acceleration rule, and nothing else.
+TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerationRule) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    std::mt19937 rng(12);
+    CheckSetup setup;
+    setup.clock_hz = 1e6;
+    setup.arch = arch;
+    setup.accel_mm_s2 = 500;
+    setup.reader_cps = 1e6;
+    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+    for (int prog = 0; prog < 30; ++prog) {
+      const tape::Program p = test::random_line_program(rng, 6, prog % 3 == 0 ? 16 : 9, modulus, 100, 300000);
+      const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
+      ASSERT_TRUE(out.passed()) << arch_name(arch) << " program " << prog << ": " << first_violation(*out.checker);
+    }
+    // The engine ramps at 8 du, the checker expects du.
+    const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
+    cfg.arch = arch;
+    CheckerOptions co;
+    co.feed_modulus = cfg.feed_modulus;
+    co.lead_bits = SerialDda::player_lead_bits(cfg);
+    co.rapid_step = cfg.rapid_step_on_port();
+    co.accel_step = cfg.accel_step;
+    cfg.accel_step *= 8;
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
+    TrajectoryChecker c(lay_out(p), nullptr, co);
+    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+    c.finish(trace.back());
+    ASSERT_GT(c.violation_count(), 0u) << arch_name(arch);
+    for (const Violation& v : c.violations())
+      EXPECT_EQ(v.rule, Rule::kAcceleration) << arch_name(arch) << ": " << v.detail;
+  }
+}
+
 // The pulse path of a chord polygon inscribed in a circle: the checker's total error at
 // every pulse equals | |p - c| - R | computed here from the recorded pulse positions.
 // G00 plays as a line at the machine's rapid step, S = rapid_step whatever the block's
