@@ -80,6 +80,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["contour"] = ctx.contour_file.empty() ? json(nullptr) : json(ctx.contour_file);
   j["engine"] = engine_name(ctx.setup.engine);
   j["arch"] = arch_name(ctx.setup.arch);
+  j["accel_mm_s2"] = ctx.setup.accel_mm_s2;
   j["clock_hz"] = ctx.setup.clock_hz;
   j["reader_cps"] = ctx.setup.reader_cps;
   j["blu_mm"] = o.blu_mm;

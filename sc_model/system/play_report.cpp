@@ -33,6 +33,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["tape"] = tape_path;
   j["engine"] = engine_name;
   j["arch"] = arch_name(r.config.arch);
+  j["accel_mm_s2"] = r.accel_mm_s2;
   j["status"] = r.ok() ? "ok" : "error";
   j["blocks"] = s.blocks_played;
   j["blocks_on_tape"] = r.blocks_on_tape;

@@ -74,6 +74,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   r.config = interp_config(opt.clock_hz, {}, opt.rapid_mm_min, opt.accel_mm_s2);  // the default widths, in the chosen arch
   r.config.arch = opt.arch;
   r.clock_hz = opt.clock_hz;
+  r.accel_mm_s2 = opt.accel_mm_s2;
   r.reader_cps = opt.reader_cps;
   r.cycles_per_frame = FrameSource::cycles_per_frame_for(opt.clock_hz, opt.reader_cps);
   r.frames = frames.size();

@@ -42,6 +42,7 @@ struct PlayResult {
   PlaySummary summary;
   InterpConfig config;
   double clock_hz = 0;
+  double accel_mm_s2 = 0;  // the feed ramp's limit (0: none)
   double reader_cps = 0;
   uint64_t cycles_per_frame = 0;
   size_t frames = 0;

@@ -81,6 +81,7 @@ nlohmann::json report_json(const CosimArgs& a, const cosim::Options& o, const co
   nlohmann::json j;
   j["tape"] = a.tape;
   j["arch"] = arch_name(o.config.arch);
+  j["accel_mm_s2"] = a.accel_mm_s2;
   j["clock_hz"] = a.clock_hz;
   j["reader_cps"] = a.reader_cps;
   j["cycles_per_frame"] = o.cycles_per_frame;
