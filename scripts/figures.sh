@@ -5,7 +5,8 @@
 # and starts with the date, the commit and the machine it was measured on.
 #   scripts/figures.sh [--quick] [--build DIR] [--no-write] [SECTION...]
 #   SECTION: area (docs/area.md: figures:area, figures:fmax), sim (docs/performance.md:
-#   figures:sim), check (figures:check), firststage (figures:firststage), gaps
+#   figures:sim), check (figures:check), motion (docs/motion-control.md: figures:motion),
+#   firststage (figures:firststage), gaps
 #   (figures:gaps-*); default all (without gaps with --quick). tests (docs/verification.md:
 #   figures:test-times) runs the whole test suite label by label and only when named.
 #   --quick     one placement seed instead of five, shorter benchmark runs (minutes, not a
@@ -76,6 +77,12 @@ check_inputs=(
 )
 check_engines="golden:serial rtl:serial golden:parallel rtl:parallel"
 
+# Cycle time with the feed ramp (docs/motion-control.md): the check inputs' tapes played
+# on the board's machine (12 MHz, the UART's 11520 frames/s, serial arch) with no ramps and
+# with every block ramped from rest to rest at each acceleration limit (mm/s^2).
+motion_accels="500 2000"
+motion_machine="--clock-hz 12e6 --reader-cps 11520 --arch serial"
+
 # Gap clocks (the player idle between blocks) against the reader and the feed, one table
 # per line: "name | script and its options | reader speeds or feeds | tapes or contour and
 # clocks". Tapes: examples/*.nc, bench/sim/small_arcs.nc, and two written by the first
@@ -112,14 +119,14 @@ while (($#)); do
     --quick) quick=1 ;;
     --no-write) write=0 ;;
     --build) build=$2; shift ;;
-    area | sim | check | firststage | gaps | tests) sections+=("$1") ;;
-    -h | --help) sed -n '2,19p' "$0"; exit 0 ;;
+    area | sim | check | motion | firststage | gaps | tests) sections+=("$1") ;;
+    -h | --help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "figures.sh: unknown argument '$1' (--help)" >&2; exit 1 ;;
   esac
   shift
 done
 if ((!${#sections[@]})); then
-  sections=(area sim check firststage)
+  sections=(area sim check motion firststage)
   ((quick)) || sections+=(gaps)
 fi
 if ((quick)); then
@@ -136,6 +143,12 @@ cd "$root"
 
 trim() { local s=$1; s=${s#"${s%%[![:space:]]*}"}; printf '%s' "${s%"${s##*[![:space:]]}"}"; }
 field() { trim "$(cut -d'|' -f"$2" <<<"$1")"; }
+# A value of a JSON report (jq path without the dot), printf-formatted if a format is given.
+json_get() {
+  local v
+  v=$(jq -r ".$2" "$1")
+  if (($# > 2)); then printf "$3" "$v"; else printf '%s' "$v"; fi
+}
 
 # The first line of every table: when, at which commit, on what.
 commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo "unknown")
@@ -345,6 +358,39 @@ section_check() {
     echo "$line ${blocks:-?} | ${clocks:-?} |$times" >>"$out"
   done
   put docs/performance.md check "$out"
+}
+
+section_motion() {
+  local out=$work/motion.md row input args accel
+  build_targets ncinterp
+  {
+    stamp motion
+    echo
+    printf '| input | blocks | no ramps: s |'
+    for accel in $motion_accels; do printf ' %s mm/s^2: s | max X, Y: mm/s^2 |' "$accel"; done
+    printf '\n|---|---:|---:|'
+    for accel in $motion_accels; do printf -- '---:|---:|'; done
+    echo
+  } >"$out"
+  for row in "${check_inputs[@]}"; do
+    input=$(field "$row" 1) args=$(field "$row" 2)
+    echo "figures.sh: motion: $input $args" >&2
+    # shellcheck disable=SC2086
+    "$build/ncinterp" tape "$input" -o "$work/m.tape" $args >/dev/null 2>&1
+    local line blocks
+    # shellcheck disable=SC2086
+    "$build/ncinterp" check "$work/m.tape" --contour "$input" $motion_machine --report "$work/m.json" >/dev/null
+    blocks=$(json_get "$work/m.json" blocks)
+    line="| $(basename "$input") \`$args\` | $blocks | $(json_get "$work/m.json" cycle_seconds '%.2f') |"
+    for accel in $motion_accels; do
+      # shellcheck disable=SC2086
+      "$build/ncinterp" check "$work/m.tape" --contour "$input" $motion_machine --accel "$accel" \
+        --report "$work/m.json" >/dev/null
+      line+=" $(json_get "$work/m.json" cycle_seconds '%.2f') | $(json_get "$work/m.json" acceleration.max_mm_s2.x '%.0f'), $(json_get "$work/m.json" acceleration.max_mm_s2.y '%.0f') |"
+    done
+    echo "$line" >>"$out"
+  done
+  put docs/motion-control.md motion "$out"
 }
 
 section_firststage() {
