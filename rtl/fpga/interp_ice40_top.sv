@@ -22,7 +22,10 @@ module interp_ice40_top #(
   // Circle mode built in (interp_top's CircleMode).
   parameter bit CircleMode  = 1'b1,
   // The machine's rapid rate (G00), mm/min.
-  parameter int RapidMmMin  = 5000
+  parameter int RapidMmMin  = 5000,
+  // The feed ramp's acceleration limit, mm/s^2 (0: no ramps; interp_top's Accel is built
+  // only when it is set).
+  parameter int AccelMmS2   = 0
 ) (
   input  logic       clk_i,
   input  logic       rst_ni,
@@ -47,6 +50,8 @@ module interp_ice40_top #(
   localparam int     ModulusWidth = $clog2(FeedModulus + 1);
   // rapid_step_i: the rapid rate in BLU/min (FracDigits 3) times 10^FeedFracDigits.
   localparam longint RapidStep    = 64'(RapidMmMin) * 1000 * FeedScale;
+  // du = A 10^FracDigits M / f^2 (InterpConfig::accel_step_for(), FracDigits 3), rounded down.
+  localparam longint AccelStep    = 64'(AccelMmS2) * 1000 * FeedModulus / (ClockHz * ClockHz);
 
   // Not brought out (see the header).
   /* verilator lint_off UNUSEDSIGNAL */
@@ -59,11 +64,11 @@ module interp_ice40_top #(
   interp_top #(
     .IncWidth(IncWidth), .FeedWidth(FeedWidth), .FeedFracDigits(FeedFracDigits),
     .PosWidth(16), .SeqWidth(SeqWidth), .OffsetWidth(16), .ModulusWidth(ModulusWidth),
-    .BitSerial(BitSerial), .CircleMode(CircleMode)
+    .BitSerial(BitSerial), .CircleMode(CircleMode), .Accel(AccelMmS2 != 0)
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(ModulusWidth'(FeedModulus)), .rapid_step_i(ModulusWidth'(RapidStep)),
-    .accel_step_i('0),
+    .accel_step_i(ModulusWidth'(AccelStep)),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .pos_x_o(pos_x), .pos_y_o(pos_y),
