@@ -143,7 +143,7 @@ module feed_generator #(
   // Load and run never coincide: a block loads when the player is idle or finishing.
   always_comb begin
     modulus     = PhaseWidth'(modulus_q);
-    sum         = 'x;  // used only while running unsaturated
+    sum         = 'x;  // used only while running unsaturated (or ramped)
     {borrow, over, reached} = 'x;
     strobe_o    = 1'b0;
     phase_d     = phase_q;
@@ -161,34 +161,32 @@ module feed_generator #(
                                              CmpWidth'(modulus_q));
       slack_it_d   = iterations_i;
       slack_frac_d = '0;
-    end else if (run_i && ramp_on) begin
-      sum            = phase_q + PhaseWidth'(rate_q);
-      {borrow, over} = {1'b0, sum} - {1'b0, modulus};
-      reached        = !borrow;
-      strobe_o = reached;
-      phase_d  = reached ? over : sum;
-      if ((rate_q == '0 || up_rate <= {1'b0, target}) && slack_it_q > IterWidth'(up_wraps)) begin
-        rate_d       = up_rate[RateWidth-1:0];
-        slack_it_d   = slack_it_q - IterWidth'(up_wraps);
-        slack_frac_d = up_frac;
-      end else if ((rate_q <= target && slack_it_q > IterWidth'(hold_wrap)) ||
-                   (rate_q == du && slack_it_q != '0)) begin
-        slack_it_d   = slack_it_q - IterWidth'(hold_wrap);
-        slack_frac_d = hold_frac;
-      end else if (rate_q != '0) begin
-        rate_d = rate_q - du;  // B(u - du) = B(u) - u: K stays
-      end
     end else if (run_i) begin
-      if (saturated_q) begin
+      if (saturated_q && !ramp_on) begin
         strobe_o = 1'b1;
       end else begin
         // One subtraction gives both the compare (no borrow: sum >= M) and sum - M.
-        // Unsaturated, S < 2^RunStepWidth: its low bits are all of it.
-        sum            = phase_q + PhaseWidth'(RunStepWidth'(run_step_i));
+        // Unsaturated, S < 2^RunStepWidth: its low bits are all of it; ramped, the rate u.
+        sum            = phase_q + (ramp_on ? PhaseWidth'(rate_q)
+                                            : PhaseWidth'(RunStepWidth'(run_step_i)));
         {borrow, over} = {1'b0, sum} - {1'b0, modulus};
         reached        = !borrow;
         strobe_o = reached;
         phase_d  = reached ? over : sum;
+      end
+      // The ramp's move for the next clock: up, stay (or creep at du), or down.
+      if (ramp_on) begin
+        if ((rate_q == '0 || up_rate <= {1'b0, target}) && slack_it_q > IterWidth'(up_wraps)) begin
+          rate_d       = up_rate[RateWidth-1:0];
+          slack_it_d   = slack_it_q - IterWidth'(up_wraps);
+          slack_frac_d = up_frac;
+        end else if ((rate_q <= target && slack_it_q > IterWidth'(hold_wrap)) ||
+                     (rate_q == du && slack_it_q != '0)) begin
+          slack_it_d   = slack_it_q - IterWidth'(hold_wrap);
+          slack_frac_d = hold_frac;
+        end else if (rate_q != '0) begin
+          rate_d = rate_q - du;  // B(u - du) = B(u) - u: K stays
+        end
       end
     end
   end
