@@ -26,8 +26,9 @@
 // or per serial iteration: no saturation). It brakes on the slack K: the phase units to the
 // block's last strobe less those a stop from u takes, B(u) = u + (u - du) + ... + du,
 // kept as whole iterations D and a fraction f, K = D M - f (no multiplier: D starts at N,
-// f at 0). Each clock: up if u + du <= target (or u = 0) and K > 2u + du; else stay if
-// u <= target and K > u, or creep if u = du and K > 0; else down. Every strobe still
+// f at 0). Each clock: up if u + du <= target and K > 2u + du (from rest, if K > 0); else
+// stay if u <= target and K > u, or creep if u = du and K > 0; else down. A hold (hold_i
+// until start_i) makes the target 0 and turns off the start from rest and the creep. Every strobe still
 // starts the same DDA iteration, so the pulses are those without ramps; only time
 // stretches. With du = 0 (or Accel = 0) it is the generator above, clock for clock.
 // Golden twin: the section "Feed generator" of GoldenInterp::tick() and
@@ -46,6 +47,10 @@ module feed_generator #(
   input  logic                    step_over_i, // S >= 2^StepWidth: saturated whatever M
   input  logic [IterWidth-1:0]    iterations_i, // its N (read with Accel only)
   input  logic [ModulusWidth-1:0] accel_step_i, // du, static; 0: no ramp
+  // Feed hold: from the clock after hold_i until the clock after start_i (cycle start). Held,
+  // a plain block strobes no more at once; a ramped one brakes at du per clock to rest.
+  input  logic                    hold_i,
+  input  logic                    start_i,
   // S of the playing block (after its load edge); only its low ModulusWidth - LeadBits
   // bits are read: a block with any higher bit set is saturated.
   /* verilator lint_off UNUSEDSIGNAL */
@@ -92,7 +97,7 @@ module feed_generator #(
   localparam int RateWidth  = ModulusWidth - CapBits;
   logic [ModulusWidth-1:0] accel_q;
   logic [RateWidth-1:0]    cap_q, rate_q, rate_d, du, target;
-  logic                    capped_q, capped_d, ramp_on;
+  logic                    capped_q, capped_d, ramp_on, held_q;
   logic [IterWidth-1:0]    slack_it_q, slack_it_d;
   logic [ModulusWidth-1:0] slack_frac_q, slack_frac_d;
   logic [RateWidth:0]      up_rate;                       // u + du
@@ -126,7 +131,7 @@ module feed_generator #(
   // K > u exactly when D exceeds the wraps of f + u (K - u = (D - wraps) M - the rest, the
   // rest < M), and K > 2u + du when D exceeds those of f + 2u + du.
   always_comb begin
-    target   = capped_q ? cap_q : RateWidth'(run_step_i);
+    target   = held_q ? '0 : capped_q ? cap_q : RateWidth'(run_step_i);
     up_rate  = {1'b0, rate_q} + {1'b0, du};
     hold_sum = (ModulusWidth + 1)'(slack_frac_q) + (ModulusWidth + 1)'(rate_q);
     {hold_borrow, hold_over} = {1'b0, hold_sum} - {2'b0, modulus_q};
@@ -163,8 +168,8 @@ module feed_generator #(
       slack_frac_d = '0;
     end else if (run_i) begin
       if (saturated_q && !ramp_on) begin
-        strobe_o = 1'b1;
-      end else begin
+        strobe_o = !held_q;
+      end else if (ramp_on || !held_q) begin
         // One subtraction gives both the compare (no borrow: sum >= M) and sum - M.
         // Unsaturated, S < 2^RunStepWidth: its low bits are all of it; ramped, the rate u.
         sum            = phase_q + (ramp_on ? PhaseWidth'(rate_q)
@@ -176,12 +181,14 @@ module feed_generator #(
       end
       // The ramp's move for the next clock: up, stay (or creep at du), or down.
       if (ramp_on) begin
-        if ((rate_q == '0 || up_rate <= {1'b0, target}) && slack_it_q > IterWidth'(up_wraps)) begin
+        // From rest (not held) whenever K > 0; otherwise while a stop from u + du fits.
+        if (rate_q == '0 && !held_q ? slack_it_q != '0
+                                    : up_rate <= {1'b0, target} && slack_it_q > IterWidth'(up_wraps)) begin
           rate_d       = up_rate[RateWidth-1:0];
           slack_it_d   = slack_it_q - IterWidth'(up_wraps);
           slack_frac_d = up_frac;
         end else if ((rate_q <= target && slack_it_q > IterWidth'(hold_wrap)) ||
-                     (rate_q == du && slack_it_q != '0)) begin
+                     (rate_q == du && !held_q && slack_it_q != '0)) begin
           slack_it_d   = slack_it_q - IterWidth'(hold_wrap);
           slack_frac_d = hold_frac;
         end else if (rate_q != '0) begin
@@ -196,6 +203,7 @@ module feed_generator #(
     accel_q   <= Accel ? accel_step_i : '0;
     cap_q     <= RateWidth'((modulus_i - 1'b1) >> CapBits);
     if (!rst_ni) begin
+      held_q       <= 1'b0;
       phase_q      <= '0;
       saturated_q  <= 1'b0;
       rate_q       <= '0;
@@ -203,6 +211,7 @@ module feed_generator #(
       slack_it_q   <= '0;
       slack_frac_q <= '0;
     end else begin
+      held_q       <= hold_i || (held_q && !start_i);
       phase_q      <= phase_d;
       saturated_q  <= saturated_d;
       rate_q       <= rate_d;

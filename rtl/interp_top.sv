@@ -56,6 +56,9 @@ module interp_top #(
   input  logic [ModulusWidth-1:0] feed_modulus_i,
   input  logic [ModulusWidth-1:0] rapid_step_i,
   input  logic [ModulusWidth-1:0] accel_step_i,
+  // The operator: feed hold and cycle start (feed_generator.sv).
+  input  logic                    hold_i,
+  input  logic                    start_i,
   // Tape reader.
   input  logic [7:0]              frame_i,
   input  logic                    frame_valid_i,
@@ -159,7 +162,7 @@ module interp_top #(
   u_feed (
     .clk_i, .rst_ni,
     .load_i(load), .step_i(next_block.step), .step_over_i(next_block.step_over),
-    .iterations_i(next_block.iterations), .accel_step_i,
+    .iterations_i(next_block.iterations), .accel_step_i, .hold_i, .start_i,
     .run_step_i(play_step),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)

@@ -33,7 +33,7 @@ module interp_tb #(
   assign tape_end    = next_frame >= nframes;
 
   interp_top #(.BitSerial(BitSerial)) dut (
-    .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]), .rapid_step_i(rapid[47:0]), .accel_step_i(48'd0),
+    .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]), .rapid_step_i(rapid[47:0]), .accel_step_i(48'd0), .hold_i(1'b0), .start_i(1'b0),
     .frame_i(frame), .frame_valid_i(frame_valid), .tape_end_i(tape_end),
     .frame_ready_o(frame_ready),
     .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y), .dir_y_o(dir_y),

@@ -148,7 +148,7 @@ module board_core #(
     .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i, .rapid_step_i, .accel_step_i('0),
+    .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
     .frame_ready_o(frame_ready),
     .step_x_o(i_step_x), .dir_x_o(i_dir_x), .step_y_o(i_step_y), .dir_y_o(i_dir_y),

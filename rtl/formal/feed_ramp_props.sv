@@ -8,7 +8,10 @@
 // - ap_run: no strobe unless the block has iterations left;
 // - ap_gap: strobes come at least 2^max(LB, 1) clocks apart, so the serial DDA takes every
 //   one (each strobe is one DDA iteration: the pulses are those without the ramp, in order);
-// - ap_moving: after its load clock a block with iterations left has u > 0: it never stalls;
+// - ap_moving: after its load clock a block with iterations left has u > 0 unless the
+//   operator holds it (or the hold ended a clock ago): it never stalls;
+// - ap_held_still: held at rest, no strobe (no pulse while held); ap_hold_brakes: held, u
+//   falls by du every clock until it is 0 (a hold brakes at the limit);
 // - ap_rest: the block's last strobe comes at u <= du: it ends at rest (one ramp step);
 // and, inside the module, a_rate_steps (u moves by 0 or du per clock) and a_rate_capped.
 // Environment (what interp_top guarantees): reset in the first clock, feed_modulus_i and
@@ -30,7 +33,9 @@ module feed_ramp_props #(
   input logic          load_i,
   input logic [MW:0]   step_i,     // S of the loading block (StepWidth = MW + 1)
   input logic          step_over_i,
-  input logic [NW-1:0] count_i     // N of the loading block
+  input logic [NW-1:0] count_i,    // N of the loading block
+  input logic          hold_i,     // the operator, at any clock
+  input logic          start_i
 );
 
   localparam int CapBits = LB > 1 ? LB : 1;
@@ -48,7 +53,7 @@ module feed_ramp_props #(
   feed_generator #(.StepWidth(MW + 1), .ModulusWidth(MW), .LeadBits(LB), .Accel(1'b1),
                    .IterWidth(NW)) u_dut (
     .clk_i, .rst_ni, .load_i, .step_i, .step_over_i, .iterations_i(count_i),
-    .accel_step_i(accel_i), .run_step_i(f_step_q), .run_i(run), .modulus_i,
+    .accel_step_i(accel_i), .hold_i, .start_i, .run_step_i(f_step_q), .run_i(run), .modulus_i,
     .strobe_o(strobe), .saturated_o(saturated)
   );
 
@@ -57,7 +62,8 @@ module feed_ramp_props #(
   // f_first_q: the load clock's edge (u = 0 at it).
   logic          f_init = 1'b1;
   logic [1:0]    f_age_q;
-  logic          f_blk_q, f_first_q;
+  logic          f_blk_q, f_first_q, f_was_held_q;
+  logic [MW-CapBits-1:0] f_rate_q;  // u in the previous clock
   logic [NW-1:0] f_left_q;
   logic [CapBits:0] f_since_q;
   localparam logic [MW-1:0] f_m_q = MW'(M), f_du_q = MW'(DU);
@@ -68,10 +74,13 @@ module feed_ramp_props #(
     f_init <= 1'b0;
     if (!rst_ni) begin
       f_age_q <= '0;  f_blk_q <= 1'b0;  f_step_q <= '0;  f_over_q <= 1'b0;  f_left_q <= '0;
-      f_since_q <= (CapBits + 1)'(Gap);  f_first_q <= 1'b0;
+      f_since_q <= (CapBits + 1)'(Gap);  f_first_q <= 1'b0;  f_was_held_q <= 1'b0;
+      f_rate_q <= '0;
     end else begin
       if (f_age_q != 2'd3) f_age_q <= f_age_q + 1'b1;
       f_first_q <= load_i;
+      f_was_held_q <= tap_held;
+      f_rate_q <= tap_rate;
       if (load_i) begin
         f_blk_q <= 1'b1;
         f_step_q <= step_i;
@@ -107,11 +116,12 @@ module feed_ramp_props #(
   // formal-tap: tap_accel = u_dut.accel_q
   // formal-tap: tap_cap = u_dut.cap_q
   // formal-tap: tap_capped = u_dut.capped_q
+  // formal-tap: tap_held = u_dut.held_q
   logic [MW:0]        tap_phase;  // PhaseWidth = MW + 1
   logic [MW-CapBits-1:0] tap_rate, tap_cap;
   logic [NW-1:0]      tap_it;
   logic [MW-1:0]      tap_frac, tap_modulus, tap_accel;
-  logic               tap_capped;
+  logic               tap_capped, tap_held;
 
   logic [PW-1:0] f_u, f_du, f_m, f_k_pos, f_left, f_v;
   assign f_u     = PW'(tap_rate);
@@ -125,7 +135,10 @@ module feed_ramp_props #(
     if (!f_init && f_blk_q) begin
       if (strobe) ap_run: assert (run);
       if (strobe) ap_gap: assert (f_since_q >= (CapBits + 1)'(Gap - 1));
-      if (run && !f_first_q) ap_moving: assert (tap_rate != '0);
+      if (run && !f_first_q && !tap_held && !f_was_held_q) ap_moving: assert (tap_rate != '0);
+      if (tap_held && tap_rate == '0) ap_held_still: assert (!strobe);
+      if (f_was_held_q && run && !f_first_q && f_rate_q != '0)
+        ap_hold_brakes: assert (PW'(tap_rate) + f_du == PW'(f_rate_q));
       if (strobe && f_left_q == NW'(1)) ap_rest: assert (f_u <= f_du);
     end
   end
@@ -156,6 +169,8 @@ module feed_ramp_props #(
     if (!f_init) begin
       // A ramped block of 3 iterations that reached 2 du ends (at rest).
       cp_ramped_block_ends: cover (f_blk_q && f_left_q == NW'(1) && strobe && f_du_q < f_cap);
+      // Held to rest mid-block, then started again.
+      cp_held_and_started: cover (f_was_held_q && !tap_held && run && tap_rate == '0 && f_left_q > NW'(1));
     end
   end
 

@@ -120,7 +120,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
       next_progress = (cycle / kProgressEvery + 1) * kProgressEvery;
     }
   };
-  FrameSource source(frames, cpf);
+  FrameSource source(frames, cpf, setup.events);
   const auto t0 = std::chrono::steady_clock::now();
   if (setup.engine == EngineKind::kGolden) {
     GoldenInterp dut(cfg);

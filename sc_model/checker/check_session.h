@@ -14,6 +14,7 @@
 #include "firststage.h"
 #include "geometry/contour.h"
 #include "interp_top.h"
+#include "operator_events.h"
 #include "reference_contour.h"
 #include "tape/tape.h"
 #include "trajectory_checker.h"
@@ -31,6 +32,7 @@ struct CheckSetup {
   Arch arch = Arch::kSerial;       // the microarchitecture both engines play
   double rapid_mm_min = kDefaultRapidMmMin;  // the machine's rapid rate (G00)
   double accel_mm_s2 = 0;          // the feed ramp's limit (0: no ramps)
+  std::vector<OperatorEvent> events;  // the operator's presses (--events)
   EngineKind engine = EngineKind::kGolden;
   double tol_mm = 0.01;            // delta: the total error's bound
   // Absolute grid point of the tape start (mm); unset: the contour's start on the grid

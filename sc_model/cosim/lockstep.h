@@ -13,6 +13,7 @@
 
 #include "interp_top.h"
 #include "interp_ports.h"
+#include "operator_events.h"
 
 namespace ncinterp::cosim {
 
@@ -21,6 +22,7 @@ struct Options {
   uint64_t cycles_per_frame = 1000;    // reader speed (FrameSource::cycles_per_frame_for)
   uint64_t max_cycles = 1'000'000'000;  // a run that does not end by then is stopped
   GoldenInterp::Fault fault;           // test hook: a fault injected into the golden model
+  std::vector<OperatorEvent> events;   // the operator's presses (--events)
   // Called every 2^24 clocks with the cycle number (e.g. progress on a terminal).
   std::function<void(uint64_t cycle)> progress;
 };

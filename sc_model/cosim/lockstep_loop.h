@@ -17,8 +17,8 @@ Result run_lockstep_on(Rtl& rtl, const std::vector<uint8_t>& frames, const Optio
   constexpr uint64_t kProgressMask = (uint64_t{1} << 24) - 1;
   GoldenInterp golden(options.config);
   if (options.fault.kind != GoldenInterp::Fault::kNone) golden.inject(options.fault);
-  FrameSource golden_source(frames, options.cycles_per_frame);
-  FrameSource rtl_source(frames, options.cycles_per_frame);
+  FrameSource golden_source(frames, options.cycles_per_frame, options.events);
+  FrameSource rtl_source(frames, options.cycles_per_frame, options.events);
 
   Result result;
   Stats& stats = result.stats;

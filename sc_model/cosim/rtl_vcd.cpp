@@ -31,7 +31,7 @@ void write_rtl_vcd(const std::vector<uint8_t>& frames, const Options& options, d
     vcd.open(out.temp_path().c_str());
     if (!vcd.isOpen()) throw std::runtime_error(out.path() + ": cannot open for writing");
     const uint64_t period = vcd_period_ps(clock_hz);
-    FrameSource source(frames, options.cycles_per_frame);
+    FrameSource source(frames, options.cycles_per_frame, options.events);
     for (uint64_t cycle = 1; cycle <= last_cycle; ++cycle) {
       const bool ready = rtl.frame_ready();
       const bool dumping = cycle >= first_cycle;

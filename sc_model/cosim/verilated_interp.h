@@ -77,6 +77,8 @@ class VerilatedInterp {
     m.frame_i = in.frame;
     m.frame_valid_i = in.frame_valid;
     m.tape_end_i = in.tape_end;
+    m.hold_i = in.hold;
+    m.start_i = in.start;
     clock(dump);
   }
   void tick(const InterpInputs& in) { tick(in, [](int) {}); }

@@ -1,22 +1,27 @@
 // Tape reader model: delivers a tape's frames to the interpolator over valid/ready at a
-// reader rate, one clock at a time. Plain C++ so the lock-step cosim and the SystemC
-// tape-reader module use the very same timing.
+// reader rate, one clock at a time, and with them the operator's presses of feed hold and
+// cycle start (operator_events.h) at their clocks. Plain C++ so the lock-step cosim and
+// the SystemC tape-reader module use the very same timing.
 // Idea: a start/stop reader needs `cycles_per_frame` clocks to bring the next character
 // under the read head; the character stays valid until the decoder takes it (valid and
 // ready at one rising edge). tape_end rises once the last frame has been taken.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
 #include "interp_ports.h"
+#include "operator_events.h"
 
 namespace ncinterp {
 
 class FrameSource {
  public:
-  FrameSource(std::vector<uint8_t> frames, uint64_t cycles_per_frame)
+  FrameSource(std::vector<uint8_t> frames, uint64_t cycles_per_frame,
+              std::vector<OperatorEvent> events = {})
       : frames_(std::move(frames)),
+        events_(std::move(events)),
         cycles_per_frame_(cycles_per_frame ? cycles_per_frame : 1),
         countdown_(cycles_per_frame_ - 1) {}
 
@@ -32,11 +37,15 @@ class FrameSource {
     in.frame_valid = next_ < frames_.size() && countdown_ == 0;
     in.frame = in.frame_valid ? frames_[next_] : 0;
     in.tape_end = next_ >= frames_.size();
+    for (size_t k = next_event_; k < events_.size() && events_[k].cycle == clocks_ + 1; ++k)
+      (events_[k].kind == OperatorEvent::kHold ? in.hold : in.start) = true;
     return in;
   }
 
   // One rising edge; `ready` is the interpolator's frame_ready before that edge.
   void clock(bool ready) {
+    ++clocks_;
+    while (next_event_ < events_.size() && events_[next_event_].cycle <= clocks_) ++next_event_;
     if (next_ >= frames_.size()) return;
     if (countdown_ > 0) {
       --countdown_;
@@ -49,10 +58,14 @@ class FrameSource {
   // Event jumping (GoldenInterp::quiet_ticks): the clocks from now during which inputs()
   // stays as it is while no frame is taken: the wait for the next frame, or (0 clocks
   // left) a frame waiting under the head; skip(n), n <= that, is n such clocks.
+  // An operator's press bounds it too: the clocks before it.
   uint64_t steady_clocks() const {
-    return next_ < frames_.size() && countdown_ > 0 ? countdown_ : UINT64_MAX;
+    uint64_t n = next_ < frames_.size() && countdown_ > 0 ? countdown_ : UINT64_MAX;
+    if (next_event_ < events_.size()) n = std::min(n, events_[next_event_].cycle - (clocks_ + 1));
+    return n;
   }
   void skip(uint64_t n) {
+    clocks_ += n;
     if (next_ < frames_.size() && countdown_ > 0) countdown_ -= n;
   }
 
@@ -61,6 +74,9 @@ class FrameSource {
 
  private:
   std::vector<uint8_t> frames_;
+  std::vector<OperatorEvent> events_;  // sorted by cycle
+  size_t next_event_ = 0;              // the first not yet past
+  uint64_t clocks_ = 0;                // edges so far: the current clock is clocks_ + 1
   uint64_t cycles_per_frame_;
   uint64_t next_ = 0;      // index of the frame under the read head
   uint64_t countdown_;     // clocks until that frame is readable

@@ -137,6 +137,10 @@ struct InterpInputs {
   uint8_t frame = 0;
   bool frame_valid = false;
   bool tape_end = false;
+  // The operator's feed hold and cycle start (hold_i, start_i): a hold from the clock after
+  // hold, until the clock after start (hold wins when both come together).
+  bool hold = false;
+  bool start = false;
 };
 
 // What each kind of output (interp_outputs.def) is in C++:

@@ -53,6 +53,7 @@ void GoldenInterp::reset() {
   saturated_ = false;
   rate_ = rate_target_ = 0;
   slack_ = 0;
+  held_ = false;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
   serial_ = SerialDda(cfg_.inc_width);
@@ -68,6 +69,7 @@ void GoldenInterp::reset() {
 
 uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   using State = GoldenTapeDecoder::State;
+  if ((in.hold || (held_ && !in.start)) != held_) return 0;  // the hold register changes
   if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
   const bool busy = out_.busy;
   const bool buffer_empty = !next_valid_;
@@ -85,14 +87,18 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
     // A running serial iteration ignores strobes: its own pulse, words and end edges bound
     // the jump. Otherwise a saturated block strobes at every edge.
     const bool ramped = accel_step_ > 0;
+    // Held at rest, the feed generator does nothing.
+    const bool stopped = held_ && (!ramped || rate_ == 0);
     if (player_running_)
       n = std::min(n, serial_.quiet_edges());
-    else if (saturated_ && !ramped)
+    else if (saturated_ && !ramped && !stopped)
       return 0;
+    if (stopped) return n;
     // With ramps only a cruise is quiet: u as close below its target as du allows, and
     // each edge j stays there while K - j u > u.
     if (ramped) {
-      if (rate_ == 0 || rate_ > rate_target_ || rate_ + accel_step_ <= rate_target_ || slack_ <= rate_)
+      if (held_ || rate_ == 0 || rate_ > rate_target_ || rate_ + accel_step_ <= rate_target_ ||
+          slack_ <= rate_)
         return 0;
       n = std::min(n, static_cast<uint64_t>((slack_ - 1) / static_cast<__int128>(rate_)));
     }
@@ -108,7 +114,7 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
 
 void GoldenInterp::skip(uint64_t n) {
   cycle_ += n;
-  if (out_.busy && !player_done_) {
+  if (out_.busy && !player_done_ && !(held_ && (accel_step_ == 0 || rate_ == 0))) {
     if (accel_step_ > 0) {  // a cruise: no strobe, u stays
       phase_ += n * rate_;
       slack_ -= static_cast<__int128>(n) * rate_;

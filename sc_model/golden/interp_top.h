@@ -109,6 +109,8 @@ class GoldenInterp {
   uint64_t accel_step_ = 0, rate_cap_ = 0;
   uint64_t rate_ = 0, rate_target_ = 0;
   __int128 slack_ = 0;
+  // Feed hold (hold_i until start_i): no strobe without ramps; with them, the target 0.
+  bool held_ = false;
   bool dir_[2] = {false, false};
   // The player's DDA: CircleDda, or in the serial arch SerialDda. player_done_ and
   // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
@@ -151,8 +153,8 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
     // phase grows by the rate u, which ramp_edge() moves toward the block's S.
     bool strobe;
     if (accel_step_ == 0) {
-      strobe = saturated_;
-      if (!strobe) {
+      strobe = saturated_ && !held_;
+      if (!strobe && !held_) {
         const uint64_t p = phase_ + feed_step_;
         strobe = p >= modulus_;
         phase_ = strobe ? p - modulus_ : p;
@@ -171,22 +173,26 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (load) load_block();  // Block buffer (rtl/block_buffer.sv) -> player
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
+  held_ = in.hold || (held_ && !in.start);
 }
 
 // The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the
 // slack K before this clock's add of u: up by du if K > u + B(u + du) - B(u) + u, i.e. a stop
-// from u + du would still end before the block's last strobe (from rest always, whatever
-// the target, so a block never waits); else stay if K > u (a stop from u still fits) and u
-// is not above its target, or creep at u = du while the block has phase left (K > 0); else
-// down by du, which leaves K as it is (B(u - du) = B(u) - u). The compares are strict, as
-// the hardware's are (it keeps K as whole iterations and a fraction).
+// from u + du would still end before the block's last strobe; from rest whenever the block
+// has phase left (K > 0), whatever the target, so a block never waits (not even one that a
+// hold stopped just before its end); else stay if K > u (a stop from u still fits) and u
+// is not above its target, or creep at u = du while the block has phase left; else down by
+// du, which leaves K as it is (B(u - du) = B(u) - u). The compares are strict, as the
+// hardware's are (it keeps K as whole iterations and a fraction).
+// Held, the target is 0 and neither the start from rest nor the creep applies: u ramps
+// down to 0 and stays there, and the phase stops.
 inline void GoldenInterp::ramp_edge() {
-  const uint64_t u = rate_, du = accel_step_;
+  const uint64_t u = rate_, du = accel_step_, target = held_ ? 0 : rate_target_;
   const __int128 w = static_cast<__int128>(u), up = 2 * w + static_cast<__int128>(du);
-  if ((u == 0 || u + du <= rate_target_) && slack_ > up) {
+  if (u == 0 && !held_ ? slack_ > 0 : u + du <= target && slack_ > up) {
     rate_ = u + du;
     slack_ -= up;
-  } else if ((u <= rate_target_ && slack_ > w) || (u == du && slack_ > 0)) {
+  } else if ((u <= target && slack_ > w) || (u == du && !held_ && slack_ > 0)) {
     slack_ -= w;
   } else if (u > 0) {
     rate_ = u - du;

@@ -109,7 +109,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   }
 
   const auto t0 = std::chrono::steady_clock::now();
-  auto top = std::make_unique<SystemTop>("SystemC", setup, FrameSource(frames, r.cycles_per_frame),
+  auto top = std::make_unique<SystemTop>("SystemC", setup, FrameSource(frames, r.cycles_per_frame, opt.events),
                                          program);
   sc_core::sc_start();
   top->finish();

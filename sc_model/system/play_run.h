@@ -12,6 +12,7 @@
 
 #include "play_monitor.h"
 #include "interp_ports.h"
+#include "operator_events.h"
 #include "atomic_file.h"
 #include "tape.h"
 #include "vcd_window.h"
@@ -23,6 +24,7 @@ struct PlayOptions {
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
   double accel_mm_s2 = 0;  // the feed ramp's limit; 0: none
+  std::vector<OperatorEvent> events;  // the operator's presses (--events)
   double clock_hz = 1e6;
   double reader_cps = 1000;  // tape reader, characters (frames) per second
   std::string vcd_path;      // empty: no VCD

@@ -33,6 +33,7 @@ struct CheckArgs {
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
   double accel_mm_s2 = 0;
+  std::string events;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
   std::string svg, report;
@@ -71,6 +72,7 @@ int run(const CheckArgs& a) {
   setup.arch = a.arch;
   setup.rapid_mm_min = a.rapid_mm_min;
   setup.accel_mm_s2 = a.accel_mm_s2;
+  setup.events = parse_events(a.events, a.clock_hz);
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";
@@ -132,6 +134,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
   add_arch_option(cmd, args->arch);
   add_rapid_option(cmd, args->rapid_mm_min);
   add_accel_option(cmd, args->accel_mm_s2);
+  add_events_option(cmd, args->events);
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();

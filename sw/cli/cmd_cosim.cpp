@@ -34,6 +34,7 @@ struct CosimArgs {
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
   double accel_mm_s2 = 0;
+  std::string events;
   std::string report, vcd;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
@@ -126,6 +127,7 @@ int run(const CosimArgs& a) {
 
   cosim::Options o;
   o.config = interp_config(a.clock_hz, {}, a.rapid_mm_min, a.accel_mm_s2);
+  o.events = parse_events(a.events, a.clock_hz);
   o.config.arch = a.arch;
   o.cycles_per_frame = FrameSource::cycles_per_frame_for(a.clock_hz, a.reader_cps);
   // Default limit: every frame read and every (good) block at its programmed or saturated
@@ -197,6 +199,7 @@ void setup(CLI::App& app) {
   add_arch_option(cmd, args->arch);
   add_rapid_option(cmd, args->rapid_mm_min);
   add_accel_option(cmd, args->accel_mm_s2);
+  add_events_option(cmd, args->events);
   cmd->add_option("--report", args->report, "Write the JSON report to this file");
   cmd->add_option("--vcd", args->vcd, "On a mismatch, write a VCD of the RTL around it to this file");
   cmd->add_option("--vcd-window", args->vcd_window, "Cycles before the mismatch in the VCD")

@@ -33,6 +33,7 @@ struct PlayArgs {
   Arch arch = Arch::kSerial;
   double rapid_mm_min = kDefaultRapidMmMin;
   double accel_mm_s2 = 0;
+  std::string events;
   std::string vcd, vcd_from, vcd_to, report;
   double clock_hz = 1e6;
   double reader_cps = 1000.0;
@@ -53,6 +54,7 @@ int run(const PlayArgs& a) {
   opt.arch = a.arch;
   opt.rapid_mm_min = a.rapid_mm_min;
   opt.accel_mm_s2 = a.accel_mm_s2;
+  opt.events = parse_events(a.events, a.clock_hz);
   opt.clock_hz = a.clock_hz;
   opt.reader_cps = a.reader_cps;
   opt.vcd_path = a.vcd;
@@ -124,6 +126,7 @@ void setup(CLI::App& app) {
   add_arch_option(cmd, args->arch);
   add_rapid_option(cmd, args->rapid_mm_min);
   add_accel_option(cmd, args->accel_mm_s2);
+  add_events_option(cmd, args->events);
   cmd->add_option("--vcd", args->vcd, "Write waves (VCD) to this file");
   const auto bound_check = [](const std::string& s) -> std::string {
     try {

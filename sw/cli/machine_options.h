@@ -1,6 +1,6 @@
 // The options that choose the machine a command plays on, one definition each, for every
 // command that plays a tape (play, cosim, check, board-sim, sweep's grid and the soak read
-// the same words): --arch, --rapid, --accel.
+// the same words): --arch, --rapid, --accel, --events.
 // Idea: a user learns an option once; its name, values, default and help are written here
 // only, and a command adds it with one call.
 #pragma once
@@ -32,6 +32,15 @@ inline CLI::Option* add_accel_option(CLI::App* cmd, double& accel_mm_s2) {
                    "(docs/motion-control.md)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+}
+
+// --events LIST into `events`: the operator's presses, e.g. hold@0.8s,resume@1.2s
+// (parse_events(), operator_events.h, reads it once the clock is known).
+inline CLI::Option* add_events_option(CLI::App* cmd, std::string& events) {
+  return cmd->add_option("--events", events,
+                         "The operator's actions in machine time, comma-separated: hold@Ts (feed "
+                         "hold), resume@Ts or start@Ts (cycle start), e.g. hold@0.8s,resume@1.2s "
+                         "(docs/motion-control.md)");
 }
 
 // --arch serial|parallel into `arch` (default: serial, what the boards ship).

@@ -1,0 +1,46 @@
+// Parses the operator's event list (operator_events.h).
+#include "operator_events.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace ncinterp {
+
+std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz) {
+  std::vector<OperatorEvent> events;
+  size_t pos = 0;
+  while (pos <= list.size() && !list.empty()) {
+    const size_t end = std::min(list.find(',', pos), list.size());
+    const std::string item = list.substr(pos, end - pos);
+    const size_t at = item.find('@');
+    const auto bad = [&](const std::string& why) {
+      return std::invalid_argument("--events: '" + item + "' " + why);
+    };
+    if (at == std::string::npos) throw bad("has no @T (e.g. hold@0.8s)");
+    const std::string name = item.substr(0, at), when = item.substr(at + 1);
+    char* stop = nullptr;
+    const double t = std::strtod(when.c_str(), &stop);
+    if (when.empty() || stop == when.c_str() || std::string(stop) != "s" || !(t >= 0) || !std::isfinite(t))
+      throw bad("needs a time in seconds, e.g. @1.5s");
+    OperatorEvent e{static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, OperatorEvent::kHold};
+    if (name == "hold") {
+      e.kind = OperatorEvent::kHold;
+    } else if (name == "resume" || name == "start") {
+      e.kind = OperatorEvent::kStart;
+    } else if (name.rfind("override=", 0) == 0 || name.rfind("rapid-override=", 0) == 0 ||
+               name == "estop" || name == "limit-x" || name == "limit-y") {
+      throw bad("is not built yet: this interpolator has feed hold (hold) and cycle start (resume, start)");
+    } else {
+      throw bad("is not an event (hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y)");
+    }
+    events.push_back(e);
+    pos = end + 1;
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+  return events;
+}
+
+}  // namespace ncinterp
