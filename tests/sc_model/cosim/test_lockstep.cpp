@@ -3,6 +3,7 @@
 // injected golden-model fault at the right cycle and block; the VCD window is written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -127,6 +128,42 @@ TEST_P(CosimArch, RampedBlocksStayInLockStepWithThePulsesOfUnrampedOnes) {
   const Result r = run(frames_of(arcs), o, rec);
   ASSERT_FALSE(r.mismatch) << cosim::describe(*r.mismatch);
   ASSERT_EQ(r.end, Result::End::kDone);
+}
+
+// The operator's feed hold and cycle start at random clocks, with and without the ramp:
+// lock step on both archs, and the pulses of the run without presses, in the same order.
+TEST_P(CosimArch, HoldsAndStartsStayInLockStepAndKeepThePulses) {
+  std::mt19937_64 rng(3302);
+  for (int t = 0; t < 8; ++t) {
+    Options o;
+    o.config = interp_config(20e3);
+    o.config.arch = GetParam();
+    o.cycles_per_frame = 1;
+    if (t % 2 == 0) o.config.accel_step = InterpConfig::accel_step_for(500, 20e3, 3, o.config.feed_modulus);
+    const std::vector<LineBlock> prog = test::random_line_program(rng, 12, o.config.feed_modulus);
+    const std::vector<uint8_t> frames = frames_of(test::line_tape_text(prog));
+    OutputRecorder plain_rec;
+    const Result plain = run(frames, o, plain_rec);
+    ASSERT_EQ(plain.end, Result::End::kDone);
+    // Presses within the run: each hold followed by a start a little later.
+    std::uniform_int_distribution<uint64_t> when(1, plain.cycles), gap(1, 3000);
+    for (int k = 0; k < 4; ++k) {
+      const uint64_t at = when(rng);
+      o.events.push_back({at, OperatorEvent::kHold});
+      o.events.push_back({at + gap(rng), OperatorEvent::kStart});
+    }
+    std::sort(o.events.begin(), o.events.end(),
+              [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+    OutputRecorder rec;
+    const Result r = run(frames, o, rec);
+    ASSERT_FALSE(r.mismatch) << "tape " << t << ": " << cosim::describe(*r.mismatch);
+    ASSERT_EQ(r.end, Result::End::kDone) << "tape " << t;
+    ASSERT_EQ(rec.pulses.size(), plain_rec.pulses.size()) << "tape " << t;
+    for (size_t i = 0; i < rec.pulses.size(); ++i) {
+      ASSERT_EQ(rec.pulses[i].axis, plain_rec.pulses[i].axis) << "tape " << t << " pulse " << i;
+      ASSERT_EQ(rec.pulses[i].plus, plain_rec.pulses[i].plus) << "tape " << t << " pulse " << i;
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Archs, CosimArch, ::testing::Values(Arch::kSerial, Arch::kParallel),

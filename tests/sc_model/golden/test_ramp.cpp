@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_source.h"
 #include "interp_top.h"
 
 #include "interp_test_support.h"
@@ -199,6 +200,37 @@ TEST_P(GoldenRamp, EachBlockLastsItsIdealTrapezoidWithinAFewClocks) {
     const double ideal = n >= peak * peak / a ? n / peak + peak / a : 2 * std::sqrt(n / a);
     const double took = static_cast<double>(loads[b + 1] - loads[b]);
     EXPECT_LE(took, ideal * 1.001 + 20) << "block " << b + 1 << ": " << took << " clocks";
+  }
+}
+
+// A hold mid-block brakes at the limit to rest and then emits nothing until start; the run
+// ends with the pulses of the run without the hold. Without the ramp a hold stops at once.
+TEST_P(GoldenRamp, AHoldStopsThePulsesUntilStartAndKeepsThePath) {
+  for (uint64_t accel : {uint64_t{0}, uint64_t{500}}) {
+    const InterpConfig cfg = ramped(GetParam(), static_cast<double>(accel));
+    const RampRun plain = play(cfg, kArcTape);
+    ASSERT_TRUE(plain.out.done);
+    const uint64_t hold_at = plain.rec.cycles / 3, start_at = hold_at + 20000;
+    GoldenInterp dut(cfg);
+    const std::vector<uint8_t> frames = frames_of(kArcTape);
+    FrameSource source(frames, 1, {{hold_at, OperatorEvent::kHold}, {start_at, OperatorEvent::kStart}});
+    OutputRecorder rec;
+    uint64_t rest = 0;  // the first clock of the hold at rest
+    for (uint64_t c = 1; c <= kMaxCycles && !dut.outputs().done; ++c) {
+      const bool ready = dut.outputs().frame_ready;
+      dut.tick(source.inputs());
+      source.clock(ready);
+      rec.observe(dut.cycle(), dut.outputs());
+      // At rest: without the ramp at once (the clock after the press), with it once u is 0.
+      if (c > hold_at && c <= start_at && (accel == 0 || dut.rate() == 0) && rest == 0) rest = c;
+    }
+    ASSERT_TRUE(dut.outputs().done);
+    ASSERT_GT(rest, 0u) << "the hold never reached rest";
+    for (const auto& p : rec.pulses)
+      EXPECT_FALSE(p.cycle > rest + 64 && p.cycle <= start_at) << "a pulse at clock " << p.cycle << " while held";
+    EXPECT_TRUE(keys(plain.rec) == keys(rec));
+    EXPECT_EQ(plain.out.pos_x, dut.outputs().pos_x);
+    EXPECT_EQ(plain.out.pos_y, dut.outputs().pos_y);
   }
 }
 
