@@ -102,6 +102,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.lead_bits = SerialDda::player_lead_bits(cfg);
   co.rapid_step = cfg.rapid_step_on_port();
   co.accel_step = cfg.accel_step;
+  co.operator_holds = !setup.events.empty();
   co.arc_bound_blu = setup.arc_bound_blu;
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);

@@ -349,7 +349,7 @@ void TrajectoryChecker::check_order(uint64_t cycle) {
                  " pulses, the DDA's order gives " + std::to_string(expected) + " at its iteration " +
                  std::to_string(iterations_) + " of " + std::to_string(schedule_.iterations()));
   }
-  check_acceleration(cycle);
+  if (options_.accel_step > 0) check_acceleration(cycle);
 }
 
 void TrajectoryChecker::check_acceleration(uint64_t cycle) {

@@ -117,6 +117,7 @@ struct CheckerOptions {
   // schedule rule checks the order of its pulses (the DDA's, at any times), its duration
   // rule that it takes at least the programmed time, and the acceleration rule holds.
   uint64_t accel_step = 0;
+  bool operator_holds = false;  // the run has the operator's presses (--events): as ramped
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_path_bound(R0, R1, arc_bound_blu) (path_bounds.h;
   // docs/circle-dda.md 3.2: 0.88 BLU, measured on every good arc up to W = 7 and 100000
@@ -168,7 +169,9 @@ class TrajectoryChecker {
   void check_schedule(uint64_t cycle, bool pulsed);
   void check_order(uint64_t cycle);           // the schedule rule with the ramp
   void check_acceleration(uint64_t cycle);    // at an iteration that pulses, with the ramp
-  bool ramped() const { return options_.accel_step > 0; }
+  // The ramp or the operator's holds move the iterations off the documented clocks: the
+  // schedule rule checks their order, the duration rule a lower bound.
+  bool ramped() const { return options_.accel_step > 0 || options_.operator_holds; }
   void report(Rule rule, uint64_t cycle, std::string detail);
 
   std::vector<ProgrammedBlock> blocks_;
