@@ -20,17 +20,18 @@
 // Strobes then come at least 2^LeadBits clocks apart, each when the DDA is idle, as long
 // as S << LeadBits < M; a block with S << LeadBits >= M is saturated (docs/interpolator.md
 // 5.2).
-// Ramp (Accel, with accel_step_i = du > 0; docs/motion-control-plan.md): the phase grows by a
+// Ramp (Accel, with accel_step_i = du > 0; docs/motion-control.md): the phase grows by a
 // rate u instead of S. u starts at 0 at the load and moves by du per clock toward the
 // target min(S, cap), cap = (M - 1) >> max(LeadBits, 1) (at most one strobe in 2 clocks,
 // or per serial iteration: no saturation). It brakes on the slack K: the phase units to the
 // block's last strobe less those a stop from u takes, B(u) = u + (u - du) + ... + du,
 // kept as whole iterations D and a fraction f, K = D M - f (no multiplier: D starts at N,
 // f at 0). Each clock: up if u + du <= target and K > 2u + du (from rest, if K > 0); else
-// stay if u <= target and K > u, or creep if u = du and K > 0; else down. A hold (hold_i
-// until start_i) makes the target 0 and turns off the start from rest and the creep. Every strobe still
-// starts the same DDA iteration, so the pulses are those without ramps; only time
-// stretches. With du = 0 (or Accel = 0) it is the generator above, clock for clock.
+// stay if u <= target and K > u, or creep if u = du and K > 0; else down. A feed hold
+// (hold_i until start_i) makes the target 0 and turns off the start from rest and the
+// creep. Every strobe still starts the same DDA iteration, so the pulses are those
+// without ramps; only time stretches. With du = 0 (or Accel = 0) it is the generator
+// above, clock for clock.
 // Golden twin: the section "Feed generator" of GoldenInterp::tick() and
 // GoldenInterp::ramp_edge() (sc_model/golden/interp_top.h).
 module feed_generator #(
@@ -101,16 +102,16 @@ module feed_generator #(
   logic [IterWidth-1:0]    slack_it_q, slack_it_d;
   logic [ModulusWidth-1:0] slack_frac_q, slack_frac_d;
   logic [RateWidth:0]      up_rate;                       // u + du
-  logic [ModulusWidth:0]   hold_sum;                      // f + u
+  logic [ModulusWidth:0]   stay_sum;                      // f + u
   logic [ModulusWidth+1:0] up_sum;                        // f + 2u + du
   // f + u - M, f + 2u + du - M and - 2M: read only when they do not borrow, then < M.
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [ModulusWidth:0]   hold_over;
+  logic [ModulusWidth:0]   stay_over;
   logic [ModulusWidth+1:0] up_over, up_over2;
   /* verilator lint_on UNUSEDSIGNAL */
-  logic                    hold_borrow, up_borrow, up_borrow2, hold_wrap;
+  logic                    stay_borrow, up_borrow, up_borrow2, stay_wrap;
   logic [1:0]              up_wraps;
-  logic [ModulusWidth-1:0] hold_frac, up_frac;
+  logic [ModulusWidth-1:0] stay_frac, up_frac;
 
   assign du      = RateWidth'(accel_q);
   assign ramp_on = Accel && accel_q != '0;
@@ -133,11 +134,11 @@ module feed_generator #(
   always_comb begin
     target   = held_q ? '0 : capped_q ? cap_q : RateWidth'(run_step_i);
     up_rate  = {1'b0, rate_q} + {1'b0, du};
-    hold_sum = (ModulusWidth + 1)'(slack_frac_q) + (ModulusWidth + 1)'(rate_q);
-    {hold_borrow, hold_over} = {1'b0, hold_sum} - {2'b0, modulus_q};
-    hold_wrap = !hold_borrow;
-    hold_frac = hold_wrap ? hold_over[ModulusWidth-1:0] : hold_sum[ModulusWidth-1:0];
-    up_sum   = (ModulusWidth + 2)'(hold_sum) + (ModulusWidth + 2)'(up_rate);
+    stay_sum = (ModulusWidth + 1)'(slack_frac_q) + (ModulusWidth + 1)'(rate_q);
+    {stay_borrow, stay_over} = {1'b0, stay_sum} - {2'b0, modulus_q};
+    stay_wrap = !stay_borrow;
+    stay_frac = stay_wrap ? stay_over[ModulusWidth-1:0] : stay_sum[ModulusWidth-1:0];
+    up_sum   = (ModulusWidth + 2)'(stay_sum) + (ModulusWidth + 2)'(up_rate);
     {up_borrow, up_over}   = {1'b0, up_sum} - {3'b0, modulus_q};
     {up_borrow2, up_over2} = {1'b0, up_sum} - {2'b0, modulus_q, 1'b0};
     up_wraps = !up_borrow2 ? 2'd2 : !up_borrow ? 2'd1 : 2'd0;
@@ -183,14 +184,15 @@ module feed_generator #(
       if (ramp_on) begin
         // From rest (not held) whenever K > 0; otherwise while a stop from u + du fits.
         if (rate_q == '0 && !held_q ? slack_it_q != '0
-                                    : up_rate <= {1'b0, target} && slack_it_q > IterWidth'(up_wraps)) begin
+                                    : up_rate <= {1'b0, target} &&
+                                      slack_it_q > IterWidth'(up_wraps)) begin
           rate_d       = up_rate[RateWidth-1:0];
           slack_it_d   = slack_it_q - IterWidth'(up_wraps);
           slack_frac_d = up_frac;
-        end else if ((rate_q <= target && slack_it_q > IterWidth'(hold_wrap)) ||
+        end else if ((rate_q <= target && slack_it_q > IterWidth'(stay_wrap)) ||
                      (rate_q == du && !held_q && slack_it_q != '0)) begin
-          slack_it_d   = slack_it_q - IterWidth'(hold_wrap);
-          slack_frac_d = hold_frac;
+          slack_it_d   = slack_it_q - IterWidth'(stay_wrap);
+          slack_frac_d = stay_frac;
         end else if (rate_q != '0) begin
           rate_d = rate_q - du;  // B(u - du) = B(u) - u: K stays
         end

@@ -1,6 +1,7 @@
 // Between the tape format and the interpolator's configuration (see interp_ports.h).
 #include "interp_ports.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace ncinterp {
@@ -23,12 +24,16 @@ InterpConfig interp_config(double clock_hz, const tape::Format& format, double r
   cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
   cfg.rapid_step = InterpConfig::rapid_step_for(rapid_mm_min, format.frac_digits, format.feed_frac_digits);
   if (accel_mm_s2 > 0) {
-    cfg.accel_step = InterpConfig::accel_step_for(accel_mm_s2, clock_hz, format.frac_digits, cfg.feed_modulus);
-    if (cfg.accel_step == 0)
+    cfg.accel_step =
+        InterpConfig::accel_step_for(accel_mm_s2, clock_hz, format.frac_digits, cfg.feed_modulus);
+    if (cfg.accel_step == 0) {
+      // One step du = 1 stands for f^2 / (10^frac_digits M) mm/s^2.
+      const double smallest = clock_hz * clock_hz / std::pow(10.0, format.frac_digits) /
+                              static_cast<double>(cfg.feed_modulus);
       throw std::invalid_argument("--accel " + std::to_string(accel_mm_s2) +
-                                  " mm/s^2 is below one ramp step at this clock (" +
-                                  std::to_string(InterpConfig::accel_step_for(1, clock_hz, format.frac_digits, cfg.feed_modulus)) +
-                                  " steps per mm/s^2)");
+                                  " mm/s^2 is below one ramp step at this clock: the smallest is " +
+                                  std::to_string(smallest) + " mm/s^2");
+    }
   }
   return cfg;
 }

@@ -118,7 +118,7 @@ uint64_t bits(const Port& port, unsigned lo, unsigned width) {
 // The held block's fields, read from blk_o in sw/host/tape/block_record.def's order (the last
 // field in the lowest bits).
 struct HeldBlock {
-  uint64_t n, motion, dx_neg, dx, dy_neg, dy, i, j, step_over, step;
+  uint64_t n, motion, dx_neg, dx, dy_neg, dy, i, j, step_over, iterations, step;
 };
 template <typename Port>
 HeldBlock unpack(const Port& p, const InterpConfig& c, unsigned step_width) {
@@ -131,6 +131,7 @@ HeldBlock unpack(const Port& p, const InterpConfig& c, unsigned step_width) {
     return v;
   };
   b.step = take(step_width);
+  b.iterations = take(w + 1);
   take(2 + k_width);  // grow_y, grow_x, k: set by the arc preparation (test_circle_rtl_lockstep)
   b.step_over = take(1);
   b.j = take(w);
@@ -172,6 +173,7 @@ template <typename Model>
     check("blk_o.j", h.j, c.circle_mode ? b.j : 0);
     check("blk_o.step", h.step, b.step);
     check("blk_o.step_over", h.step_over, b.step_over);
+    check("blk_o.iterations", h.iterations, b.iterations);
   }
   if (m.err_o) {
     check("err_code_o", m.err_code_o, static_cast<uint64_t>(g.error_code()));
