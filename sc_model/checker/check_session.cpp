@@ -103,6 +103,31 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.rapid_step = cfg.rapid_step_on_port();
   co.accel_step = cfg.accel_step;
   co.operator_holds = !setup.events.empty();
+  // The held stretches: each hold press to the next start press. Settling: a ramp down from
+  // the cap (M / 2 / du clocks) and a serial iteration in flight.
+  for (size_t k = 0; k < setup.events.size(); ++k) {
+    if (setup.events[k].kind != OperatorEvent::kHold) continue;
+    uint64_t start = UINT64_MAX;
+    for (size_t e = k + 1; e < setup.events.size(); ++e)
+      if (setup.events[e].kind == OperatorEvent::kStart) {
+        start = setup.events[e].cycle;
+        break;
+      }
+    co.holds.emplace_back(setup.events[k].cycle, start);
+  }
+  // Settling: the ramp down from the fastest rate a block of the tape asks (S, an arc's
+  // F 2^(k+1) as its N < 2^(k+1)), and a serial iteration in flight.
+  unsigned __int128 fastest = 0;
+  for (const ProgrammedBlock& b : blocks) {
+    const uint64_t big = static_cast<uint64_t>(std::max({std::llabs(b.tape.dx) + std::llabs(b.tape.i),
+                                                         std::llabs(b.tape.dy) + std::llabs(b.tape.j)}));
+    fastest = std::max(fastest, b.is_arc() ? static_cast<unsigned __int128>(b.tape.feed) << (bit_length(big) + 1)
+                                           : line_step(b.tape, cfg));
+  }
+  const uint64_t cap = (cfg.feed_modulus - 1) >> 1;
+  const uint64_t top = fastest < cap ? static_cast<uint64_t>(fastest) : cap;
+  co.hold_settle = (cfg.accel_step ? top / cfg.accel_step : 0) + 2 +
+                   (cfg.serial() ? 2 * SerialDda::iteration_clocks(cfg.inc_width) : 1);
   co.arc_bound_blu = setup.arc_bound_blu;
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);

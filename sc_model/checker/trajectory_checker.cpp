@@ -39,6 +39,7 @@ const char* rule_name(Rule rule) {
     case Rule::kDuration: return "duration";
     case Rule::kSequence: return "sequence";
     case Rule::kComplete: return "complete";
+    case Rule::kHeld: return "held";
     case Rule::kAcceleration: return "accel";
     case Rule::kTotalError: return "tolerance";
   }
@@ -187,6 +188,13 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
     }
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
+  }
+  if (pulsed) {
+    for (const auto& [hold, start] : options_.holds)
+      if (cycle > hold + options_.hold_settle && cycle <= start)
+        report(Rule::kHeld, cycle,
+               "step pulse while held: hold pressed at clock " + std::to_string(hold) + ", start " +
+                   (start == UINT64_MAX ? std::string("never") : "at " + std::to_string(start)));
   }
   prev_.keep(o);
 }

@@ -18,6 +18,9 @@
 //   endpoint  at the block's end each axis has emitted exactly its increment;
 //   duration  (G01 blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
 //             at least that with the ramp, and feed_saturated_o says whether F << k >= M;
+//   held      no pulse while the operator holds (--events), once the machine can be at
+//             rest: from the hold's press plus CheckerOptions::hold_settle clocks (the
+//             ramp down from the fastest rate and a serial iteration in flight) to start;
 //   accel     (straight blocks, with the ramp) no axis's acceleration exceeds the limit
 //             du / M BLU per clock^2 (times |d| / 2^k for the axis of d), measured from
 //             the times of the iterations that pulse, plus the allowance of one clock
@@ -28,6 +31,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dda_circle.h"
@@ -49,6 +53,7 @@ enum class Rule : uint8_t {
   kDuration,
   kSequence,
   kComplete,
+  kHeld,
   kAcceleration,
   kTotalError,  // set by the caller's tolerance check, not by observe()
 };
@@ -118,6 +123,10 @@ struct CheckerOptions {
   // rule that it takes at least the programmed time, and the acceleration rule holds.
   uint64_t accel_step = 0;
   bool operator_holds = false;  // the run has the operator's presses (--events): as ramped
+  // The held stretches (press of hold, press of start; UINT64_MAX: none), and the clocks
+  // after a hold's press in which pulses may still come.
+  std::vector<std::pair<uint64_t, uint64_t>> holds;
+  uint64_t hold_settle = 0;
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_path_bound(R0, R1, arc_bound_blu) (path_bounds.h;
   // docs/circle-dda.md 3.2: 0.88 BLU, measured on every good arc up to W = 7 and 100000

@@ -106,6 +106,45 @@ TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerati
   }
 }
 
+// Feed hold in check (--events): a run held and started passes every rule; a checker told
+// of a hold the engine never got reports the pulses in the held stretch, and only them.
+TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    std::mt19937 rng(13);
+    CheckSetup setup;
+    setup.clock_hz = 1e6;
+    setup.arch = arch;
+    setup.accel_mm_s2 = 500;
+    setup.reader_cps = 1e6;
+    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+    const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+    setup.events = {{50000, OperatorEvent::kHold}, {250000, OperatorEvent::kStart}};
+    const CheckOutcome held = run_check(frames_of(p), nullptr, setup);
+    ASSERT_TRUE(held.passed()) << arch_name(arch) << ": " << first_violation(*held.checker);
+    // The engine without the presses, the checker with them.
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
+    cfg.arch = arch;
+    CheckerOptions co;
+    co.feed_modulus = cfg.feed_modulus;
+    co.lead_bits = SerialDda::player_lead_bits(cfg);
+    co.rapid_step = cfg.rapid_step_on_port();
+    co.accel_step = cfg.accel_step;
+    co.operator_holds = true;
+    co.holds = {{50000, 250000}};
+    co.hold_settle = 40000;
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
+    TrajectoryChecker c(lay_out(p), nullptr, co);
+    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+    c.finish(trace.back());
+    ASSERT_GT(c.violation_count(), 0u) << arch_name(arch);
+    for (const Violation& v : c.violations()) {
+      EXPECT_EQ(v.rule, Rule::kHeld) << arch_name(arch) << ": " << v.detail;
+      EXPECT_GT(v.cycle, 90000u);
+      EXPECT_LE(v.cycle, 250000u);
+    }
+  }
+}
+
 // The pulse path of a chord polygon inscribed in a circle: the checker's total error at
 // every pulse equals | |p - c| - R | computed here from the recorded pulse positions.
 // G00 plays as a line at the machine's rapid step, S = rapid_step whatever the block's
