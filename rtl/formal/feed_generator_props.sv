@@ -123,9 +123,11 @@ module feed_generator_props #(
   // formal-tap: tap_phase = u_dut.phase_q
   // formal-tap: tap_sat = u_dut.saturated_q
   // formal-tap: tap_modulus = u_dut.modulus_q
+  // formal-tap: tap_held = u_dut.held_q
   logic [MW:0]        tap_phase;  // PhaseWidth = MW + 1
   logic               tap_sat;
   logic [MW-1:0]      tap_modulus;
+  logic               tap_held;     // never: hold_i is tied low here (feed_ramp_props holds)
 
 `ifndef FORMAL_PROPERTIES_ONLY
   logic [PW-1:0]      f_done;
@@ -134,6 +136,7 @@ module feed_generator_props #(
   always_comb begin
     if (!f_init) begin
       if (f_age_q >= 2'd2) ai_modulus: assert (tap_modulus == f_m_q);
+      ai_not_held: assert (!tap_held);
       if (!f_blk_q) ai_idle: assert (!run);
       if (f_blk_q) begin
         ai_block: assert (tap_sat == f_sat
