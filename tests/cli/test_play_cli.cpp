@@ -113,6 +113,31 @@ TEST_F(PlayCli, TheCircleExampleClosesOnBothEngines) {
     EXPECT_EQ(g[key], r[key]) << key;
 }
 
+// --accel and --events: both engines play the example ramped and held identically, to the
+// same final position as without them, in more clocks; the report names the limit. An event
+// that is not built, or without a time, is refused before anything is written.
+TEST_F(PlayCli, RampedAndHeldPlaysAgreeOnBothEnginesAndKeepThePath) {
+  const std::string motion = " --accel 500 --events hold@1.0s,resume@1.5s";
+  ASSERT_EQ(play(kGear + " --report " + path("p.json")), 0) << stderr_;
+  ASSERT_EQ(play(kGear + motion + " --engine golden --report " + path("g.json")), 0) << stderr_;
+  ASSERT_EQ(play(kGear + motion + " --engine rtl --report " + path("r.json")), 0) << stderr_;
+  const nlohmann::json p = nlohmann::json::parse(slurp(path("p.json")));
+  const nlohmann::json g = nlohmann::json::parse(slurp(path("g.json")));
+  const nlohmann::json r = nlohmann::json::parse(slurp(path("r.json")));
+  EXPECT_EQ(g["accel_mm_s2"], 500.0);
+  EXPECT_EQ(g["status"], "ok");
+  EXPECT_GT(g["cycles"].get<uint64_t>(), p["cycles"].get<uint64_t>());
+  for (const char* key : {"cycles", "pulses", "final_position_blu", "status"}) EXPECT_EQ(g[key], r[key]) << key;
+  EXPECT_EQ(g["pulses"], p["pulses"]);
+  EXPECT_EQ(g["final_position_blu"], p["final_position_blu"]);
+
+  EXPECT_EQ(play(kGear + " --events estop@1s --report " + path("e.json")), 1);
+  EXPECT_NE(stderr_.find("'estop@1s' is not built yet"), std::string::npos) << stderr_;
+  EXPECT_EQ(play(kGear + " --events hold@1 --report " + path("e.json")), 1);
+  EXPECT_NE(stderr_.find("'hold@1' needs a time in seconds"), std::string::npos) << stderr_;
+  EXPECT_EQ(files(), (std::vector<std::string>{"g.json", "p.json", "r.json"}));
+}
+
 TEST_F(PlayCli, BadTapeGivesOneLineAnErrorReportAndNoVcd) {
   std::ifstream in(kGear);
   std::stringstream ss;
