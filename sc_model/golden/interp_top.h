@@ -99,13 +99,13 @@ class GoldenInterp {
   uint64_t feed_step_ = 0;  // S = F * N
   uint64_t phase_ = 0;
   bool saturated_ = false;
-  // The ramp (accel_step_ > 0, docs/motion-control-plan.md): the phase grows by rate_ (u, a
+  // The ramp (accel_step_ > 0, docs/motion-control.md): the phase grows by rate_ (u, a
   // multiple of du = accel_step_ from 0), which moves by at most du per clock toward
   // rate_target_, the block's S capped at rate_cap_ (u < M / 2 and u 2^lead_bits_ < M: at
   // most one strobe in 2 clocks, or per serial iteration). slack_: K, the phase units to
   // the block's last strobe (N M at the load, less each clock's u) less what a stop from u
-  // adds, B(u) = u + (u - du) + ... + du. K stays >= 0 in a block (ramp_edge() brakes in
-  // time), so the block ends at u <= du.
+  // adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block (ramp_edge()
+  // brakes in time), so the block ends at u <= du.
   uint64_t accel_step_ = 0, rate_cap_ = 0;
   uint64_t rate_ = 0, rate_target_ = 0;
   __int128 slack_ = 0;
@@ -177,8 +177,9 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
 }
 
 // The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the
-// slack K before this clock's add of u: up by du if K > u + B(u + du) - B(u) + u, i.e. a stop
-// from u + du would still end before the block's last strobe; from rest whenever the block
+// slack K before this clock's add of u: up by du if K > 2u + du, i.e. after this clock's u
+// the slack still covers B(u + du) - B(u) = u + du, so a stop from u + du still ends before
+// the block's last strobe; from rest whenever the block
 // has phase left (K > 0), whatever the target, so a block never waits (not even one that a
 // hold stopped just before its end); else stay if K > u (a stop from u still fits) and u
 // is not above its target, or creep at u = du while the block has phase left; else down by

@@ -30,7 +30,7 @@ struct DecodedBlock {
   uint64_t step = 0;
   bool step_over = false;
   // N, the block's DDA iterations (2^k for a line, the dry run's count for an arc): the
-  // feed generator's ramp (GoldenInterp, docs/motion-control-plan.md) brakes within them.
+  // feed generator's ramp (GoldenInterp, docs/motion-control.md) brakes within them.
   uint64_t iterations = 0;
 
   bool is_arc() const { return tape::is_arc(static_cast<tape::Motion>(motion)); }

@@ -1,4 +1,4 @@
-// Unit tests of the golden model's feed ramp (accel_step > 0, docs/motion-control-plan.md):
+// Unit tests of the golden model's feed ramp (accel_step > 0, docs/motion-control.md):
 // a ramp changes only when the DDA iterates, so every block emits exactly the pulses it
 // emits without ramps, in the same order; every block starts and ends at rest; the rate
 // moves by at most one step per clock; the axes' accelerations measured from the pulse
