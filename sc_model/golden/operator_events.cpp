@@ -22,8 +22,8 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
     const std::string name = item.substr(0, at), when = item.substr(at + 1);
     char* stop = nullptr;
     const double t = std::strtod(when.c_str(), &stop);
-    if (when.empty() || stop == when.c_str() || std::string(stop) != "s" || !(t >= 0) || !std::isfinite(t))
-      throw bad("needs a time in seconds, e.g. @1.5s");
+    if (when.empty() || stop == when.c_str() || std::string(stop) != "s" || !(t >= 0) || !(t <= 1e6))
+      throw bad("needs a time in seconds from 0 to 10^6, e.g. @1.5s");
     OperatorEvent e{static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, OperatorEvent::kHold};
     if (name == "hold") {
       e.kind = OperatorEvent::kHold;
