@@ -127,8 +127,8 @@ package interp_pkg;
 endpackage
 
 // block_t, the decoded block (sw/host/tape/block_record.def), declared inside a module
-// with `INTERP_BLOCK_T: its widths are the module's IncWidth, SeqWidth, StepWidth and
-// KWidth. Fields, most significant first:
+// with `INTERP_BLOCK_T: its widths are the module's IncWidth, SeqWidth, StepWidth, KWidth
+// and IterWidth. Fields, most significant first:
 //   n: N, the sequence number
 //   motion: an interp_pkg::motion_e code
 //   dx_neg: dx < 0
@@ -141,7 +141,7 @@ endpackage
 //   k: a line's bit length of max(|dx|, |dy|), an arc's circle DDA k
 //   grow_x: an arc: |x| grows
 //   grow_y: an arc: |y| grows
-//   iterations: N, the DDA iterations: 2^k for a line, the dry run's count for an arc
+//   iterations: N, the DDA iterations: 2^k for a line, the dry run's count for an arc (the ramp's; one bit, 0, without it)
 //   step: S = F N, modulo 2^StepWidth
 `define INTERP_BLOCK_T \
   typedef struct packed { \
@@ -157,6 +157,6 @@ endpackage
     logic [KWidth-1:0]                  k; \
     logic                               grow_x; \
     logic                               grow_y; \
-    logic [IncWidth:0]                  iterations; \
+    logic [IterWidth-1:0]               iterations; \
     logic [StepWidth-1:0]               step; \
   } block_t;

@@ -83,6 +83,7 @@ module interp_top #(
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
+  localparam int IterWidth = Accel ? IncWidth + 1 : 1;  // the block's N (block_record.def)
   // The DDA's clocks per iteration are 2^LeadBits: 1 (dda_circle), or 2P with BitSerial
   // (dda_serial.sv; P = 2^$clog2(IncWidth)).
   localparam int LeadBits = BitSerial ? $clog2(IncWidth) + 1 : 0;
@@ -132,7 +133,7 @@ module interp_top #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
     .StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial),
-    .CircleMode(CircleMode)
+    .CircleMode(CircleMode), .Accel(Accel)
   ) u_decoder (
     .clk_i, .rst_ni, .rapid_step_i,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
@@ -162,7 +163,7 @@ module interp_top #(
   u_feed (
     .clk_i, .rst_ni,
     .load_i(load), .step_i(next_block.step), .step_over_i(next_block.step_over),
-    .iterations_i(next_block.iterations), .accel_step_i, .hold_i, .start_i,
+    .iterations_i((IncWidth + 1)'(next_block.iterations)), .accel_step_i, .hold_i, .start_i,
     .run_step_i(play_step),
     .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)

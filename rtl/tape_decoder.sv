@@ -49,7 +49,10 @@ module tape_decoder #(
   parameter bit BitSerial      = 1'b0,
   // Circle mode built in (interp_top's CircleMode); without it a G02/G03 word is an error
   // (ErrNoCircleMode), I and J are read but not kept, and there is no arc preparation.
-  parameter bit CircleMode     = 1'b1
+  parameter bit CircleMode     = 1'b1,
+  // The feed ramp is built (interp_top's Accel): only it reads the block's N, so without it
+  // N is a constant 0 and its count folds away.
+  parameter bit Accel          = 1'b1
 ) (
   // The ports are declared below, after block_t (`INTERP_BLOCK_T), which the block's
   // port has as its type and which needs the parameters above.
@@ -59,6 +62,7 @@ module tape_decoder #(
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
+  localparam int IterWidth = Accel ? IncWidth + 1 : 1;  // the block's N (block_record.def)
   `INTERP_BLOCK_T
 
   input  logic                   clk_i;
@@ -541,7 +545,7 @@ module tape_decoder #(
   assign blk_o.k         = k_q;
   assign blk_o.grow_x    = grow_x_q;
   assign blk_o.grow_y    = grow_y_q;
-  assign blk_o.iterations = iter_q;
+  assign blk_o.iterations = Accel ? IterWidth'(iter_q) : '0;
   assign blk_valid_o     = state_q == StHold;
   assign end_o         = state_q == StEnd;
   assign tape_ended_o  = tape_end_q;

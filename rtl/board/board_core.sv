@@ -143,9 +143,10 @@ module board_core #(
   assign frame_valid = fifo_valid && !eot && !tape_end_q;
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
+  // The boards have no feed ramp yet (docs/motion-control.md): Accel = 0 builds none of it.
   interp_top #(
     .BitSerial(BitSerial), .CircleMode(CircleMode), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
-    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth)
+    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .Accel(1'b0)
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),

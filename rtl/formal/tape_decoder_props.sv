@@ -49,7 +49,7 @@ module tape_decoder_props #(
   localparam int LowWidth = $clog2(K + 2);
   // The decoded block (`INTERP_BLOCK_T, sw/host/tape/block_record.def), with the names of
   // the widths it reads.
-  localparam int IncWidth = W, SeqWidth = NW, StepWidth = SW;
+  localparam int IncWidth = W, SeqWidth = NW, StepWidth = SW, IterWidth = W + 1;
   `INTERP_BLOCK_T
 
   logic              frame_ready, blk_valid;

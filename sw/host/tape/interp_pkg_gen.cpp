@@ -191,8 +191,8 @@ void block_record_macro(std::ostream& out) {
   for (const Field& f : kBlockFields) range_width = std::max(range_width, std::string(f.range).size());
   out << "\n"
          "// block_t, the decoded block (sw/host/tape/block_record.def), declared inside a module\n"
-         "// with `INTERP_BLOCK_T: its widths are the module's IncWidth, SeqWidth, StepWidth and\n"
-         "// KWidth. Fields, most significant first:\n";
+         "// with `INTERP_BLOCK_T: its widths are the module's IncWidth, SeqWidth, StepWidth, KWidth\n"
+         "// and IterWidth. Fields, most significant first:\n";
   for (const Field& f : kBlockFields) out << "//   " << f.name << ": " << f.meaning << "\n";
   out << "`define INTERP_BLOCK_T \\\n"
          "  typedef struct packed { \\\n";
