@@ -1,7 +1,8 @@
 // SVG plot of a check (see check_plot.h).
-// Idea: three panels from check_plot_data's series: the whole part (equal axes, mm), the
+// Idea: four panels from check_plot_data's series: the whole part (equal axes, mm), the
 // worst point up close (the staircase of single pulses against the chord and the contour),
-// and the error along the path against the tolerance band. Nothing is computed here but
+// the error along the path against the tolerance band, and the feed profile (each axis's
+// speed against time). Nothing is computed here but
 // the mapping of those series to what the reader sees.
 #include "check_plot.h"
 
@@ -123,22 +124,39 @@ Panel error_panel(const CheckPlotData& d) {
   return p;
 }
 
+Panel speed_panel(const CheckPlotData& d) {
+  Panel p;
+  p.title = "feed profile: each axis's speed against time (pulses per bin)";
+  p.x_label = "time (s)";
+  p.y_label = "speed (mm/min)";
+  p.columns_spanned = 2;
+  Series x{"X", {}, {}, Colour::kBlue}, y{"Y", {}, {}, Colour::kRed};
+  for (const SpeedBin& b : d.speed_bins) {
+    x.x.push_back(b.t_s), x.y.push_back(b.x_mm_min);
+    y.x.push_back(b.t_s), y.y.push_back(b.y_mm_min);
+  }
+  p.series.push_back(std::move(x));
+  p.series.push_back(std::move(y));
+  return p;
+}
+
 }  // namespace
 
 std::string check_svg(const CheckOutcome& outcome, const ReportContext& context) {
-  const CheckPlotData d = check_plot_data(outcome, context.setup.tol_mm);
+  const CheckPlotData d = check_plot_data(outcome, context.setup.tol_mm, context.setup.clock_hz);
   plot::Figure f;
   auto file_name = [](const std::string& path) { return path.substr(path.find_last_of('/') + 1); };
   f.title = "ncinterp check: " + file_name(context.tape_file) +
             (context.contour_file.empty() ? "" : " against " + file_name(context.contour_file));
   f.columns = 2;
-  f.rows = 2;
+  f.rows = 3;
   f.width_px = 1400;
-  f.height_px = 1200;
+  f.height_px = 1800;
   f.panels.push_back(overview_panel(d));
   if (d.has_worst) f.panels.push_back(zoom_panel(d));
   else f.panels.emplace_back().title = "no pulse: nothing to zoom on";
   f.panels.push_back(error_panel(d));
+  f.panels.push_back(speed_panel(d));
   return plot::render_svg(f);
 }
 

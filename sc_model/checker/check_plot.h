@@ -1,6 +1,7 @@
 // SVG plot of a check (`ncinterp check --svg`): the contour, the programmed chords and
-// arcs, the pulse staircase, a panel zoomed on the worst point, and the error along the
-// path with the delta band; axes in mm, labels and a legend (drawn with sw/host/plot).
+// arcs, the pulse staircase, a panel zoomed on the worst point, the error along the path
+// with the delta band, and the feed profile (each axis's speed against time); labels and a
+// legend (drawn with sw/host/plot).
 #pragma once
 #include <string>
 

@@ -60,7 +60,8 @@ void grow(PlotWindow& w, PlotPoint p) {
 
 }  // namespace
 
-CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, size_t bins) {
+CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, double clock_hz, size_t bins,
+                              size_t speed_bins) {
   CheckPlotData d;
   d.tol_mm = tol_mm;
   const TrajectoryChecker& c = *o.checker;
@@ -200,6 +201,23 @@ CheckPlotData check_plot_data(const CheckOutcome& o, double tol_mm, size_t bins)
         e.total_min = e.total_min < 0 ? t : std::min(e.total_min, t);
       }
     }
+  }
+  if (!pulses.empty() && speed_bins > 0 && clock_hz > 0) {
+    // Clocks 0 .. the last pulse's, in bins of equal time; each pulse's steps (its move
+    // from the last position, one BLU per axis) are counted in the bin of its clock.
+    const uint64_t span = pulses.back().cycle + 1;
+    const double bin_s = static_cast<double>(span) / speed_bins / clock_hz;
+    d.speed_bins.resize(speed_bins);
+    for (size_t b = 0; b < speed_bins; ++b) d.speed_bins[b].t_s = bin_s * b;
+    GridPoint last{0, 0};
+    for (const PulseSample& p : pulses) {
+      SpeedBin& b = d.speed_bins[std::min(speed_bins - 1, static_cast<size_t>(p.cycle * speed_bins / span))];
+      b.x_mm_min += std::llabs(p.position.x - last.x);
+      b.y_mm_min += std::llabs(p.position.y - last.y);
+      last = p.position;
+    }
+    const double mm_min_per_step = blu * 60.0 / bin_s;
+    for (SpeedBin& b : d.speed_bins) b.x_mm_min *= mm_min_per_step, b.y_mm_min *= mm_min_per_step;
   }
   return d;
 }

@@ -5,7 +5,9 @@
 // A part is 10^5 BLU across and has 10^5..10^6 pulses, so each view keeps only what its scale
 // can show: the overview draws the programmed path (the staircase is within a BLU of it), the
 // zoom draws every pulse inside its window, the error curve keeps the max and min of each of
-// about a thousand bins along the path (so no peak is lost).
+// about a thousand bins along the path (so no peak is lost); (4) the feed profile, each
+// axis's speed against time, from the pulses counted in bins of equal time (a pulse is one
+// BLU), where the ramps, the holds and the corners show.
 #pragma once
 #include <string>
 #include <vector>
@@ -30,6 +32,11 @@ struct ErrorBin {
   double path_max = 0.0;                 // interpolator error, mm
 };
 
+struct SpeedBin {
+  double t_s = 0.0;                      // the bin's start, seconds of machine time
+  double x_mm_min = 0.0, y_mm_min = 0.0; // each axis's speed over the bin (pulses x BLU / time)
+};
+
 struct CheckPlotData {
   std::vector<Polyline> contour;       // cutting segments, densely sampled
   std::vector<Polyline> rapids;        // input G0 moves
@@ -47,13 +54,15 @@ struct CheckPlotData {
   std::vector<Polyline> zoom_programmed;  // programmed path clipped to the zoom (runs)
   std::vector<Polyline> zoom_pulses;   // every pulse position in the zoom, in order (runs)
   std::vector<ErrorBin> error_bins;    // along the path
+  std::vector<SpeedBin> speed_bins;    // over time, from clock 0 to the last pulse
   double path_length_mm = 0.0;
   double tol_mm = 0.0;
   bool total_measured = false;
   bool cutter = false;                 // the zoom's contour is the cutter-centre path
 };
 
-// Needs the outcome's pulses (CheckSetup::keep_pulses).
-CheckPlotData check_plot_data(const CheckOutcome& outcome, double tol_mm, size_t bins = 1000);
+// Needs the outcome's pulses (CheckSetup::keep_pulses). clock_hz turns clocks into time.
+CheckPlotData check_plot_data(const CheckOutcome& outcome, double tol_mm, double clock_hz,
+                              size_t bins = 1000, size_t speed_bins = 500);
 
 }  // namespace ncinterp::checker

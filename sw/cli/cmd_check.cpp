@@ -138,7 +138,7 @@ CommandRegistration registration("check", [](CLI::App& app) {
   cmd->add_option("--clock-hz", args->clock_hz, "interpolator clock, Hz")->capture_default_str();
   cmd->add_option("--reader-cps", args->reader_cps, "tape reader speed, characters per second")
       ->capture_default_str();
-  cmd->add_option("--svg", args->svg, "plot: contour, chords, pulse staircase, worst point, error along the path");
+  cmd->add_option("--svg", args->svg, "plot: contour, chords, pulse staircase, worst point, error along the path, feed profile (each axis's speed against time)");
   cmd->add_option("--report", args->report, "JSON report: per block and overall errors, feed, violations");
   cmd->add_option("--blu", args->blu_mm, "BLU of the tape, mm (as given to `tape`)")->capture_default_str();
   cmd->add_option("--width", args->width, "increment register width W (as given to `tape`)")
