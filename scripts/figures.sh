@@ -41,6 +41,8 @@ area_rows=(
   "interp_ice40_top, parallel | ice40 | BitSerial=0 | hx1k:tq144 up5k:sg48 hx8k:ct256"
   "interp_ice40_top, serial, lines only | ice40 | BitSerial=1 CircleMode=0 | hx1k:tq144 up5k:sg48 hx8k:ct256"
   "interp_ice40_top, parallel, lines only | ice40 | BitSerial=0 CircleMode=0 | hx1k:tq144 up5k:sg48 hx8k:ct256"
+  "interp_ice40_top, serial, ramp 500 mm/s^2 | ice40 | BitSerial=1 AccelMmS2=500 | hx1k:tq144 up5k:sg48 hx8k:ct256"
+  "interp_ice40_top, parallel, ramp 500 mm/s^2 | ice40 | BitSerial=0 AccelMmS2=500 | hx1k:tq144 up5k:sg48 hx8k:ct256"
   "iCEstick board (HX1K) | board | icestick | -"
   "iCEBreaker board (UP5K) | board | icebreaker | -"
 )

@@ -6,7 +6,10 @@
 // The long version is the soak (bench/soak, docs/verification.md).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "random_contour.h"
 #include "regression_support.h"
@@ -91,6 +94,47 @@ TEST_P(ExampleRegression, CosimClean) {
 #endif
 }
 
+// With the feed ramp (500 mm/s^2, every block from rest to rest) each example plays in lock
+// step on both archs, with the pulses per axis and direction and the end position of the
+// run without ramps, only later; the checker's rules with the ramp (the DDA's order of
+// pulses in every block, the acceleration limit) hold on the golden run. About 13 s an
+// example, so CI runs one of each kind (chords of each contour, arcs, a cutter);
+// NCINTERP_REGRESSION_ALL=1 build/tests/sw/tools/regression/test_regression
+// --gtest_filter='*Ramped*' runs every example.
+class RampedRegression : public ::testing::TestWithParam<Example> {};
+
+TEST_P(RampedRegression, KeepsThePulsesOnBothArchs) {
+#ifndef NCINTERP_TEST_HAS_COSIM
+  FAIL() << "NOT RUN: no cosim library in this build";
+#else
+  Case c = case_of(GetParam());
+  constexpr double kAccel = 500.0;
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    SCOPED_TRACE(arch_name(arch));
+    cosim::Options o;
+    o.config = interp_config(c.check.clock_hz, firststage::tape_format(c.first_stage));
+    o.config.arch = arch;
+    o.cycles_per_frame = FrameSource::cycles_per_frame_for(c.check.clock_hz, c.check.reader_cps);
+    const std::vector<uint8_t> tape = make_tape(c);
+    const cosim::Result plain = cosim::run_lockstep(tape, o);
+    o.config = interp_config(c.check.clock_hz, firststage::tape_format(c.first_stage),
+                             kDefaultRapidMmMin, kAccel);
+    o.config.arch = arch;
+    const cosim::Result ramped = cosim::run_lockstep(tape, o);
+    ASSERT_FALSE(ramped.mismatch) << cosim::describe(*ramped.mismatch);
+    ASSERT_EQ(plain.end, cosim::Result::End::kDone);
+    ASSERT_EQ(ramped.end, cosim::Result::End::kDone);
+    for (int axis = 0; axis < 2; ++axis)
+      for (int dir = 0; dir < 2; ++dir) EXPECT_EQ(ramped.stats.pulses[axis][dir], plain.stats.pulses[axis][dir]);
+    EXPECT_EQ(ramped.last.pos_x, plain.last.pos_x);
+    EXPECT_EQ(ramped.last.pos_y, plain.last.pos_y);
+    EXPECT_GT(ramped.cycles, plain.cycles);
+  }
+  c.check.accel_mm_s2 = kAccel;
+  expect_clean_check(c, EngineKind::kGolden);
+#endif
+}
+
 const Example kExamples[] = {
     {"circle_m1", "circle_r50.json", 1},
     {"circle_m2", "circle_r50.json", 2},
@@ -111,6 +155,19 @@ const Example kExamples[] = {
 };
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleRegression, ::testing::ValuesIn(kExamples),
+                         [](const ::testing::TestParamInfo<Example>& i) { return i.param.name; });
+
+std::vector<Example> ramped_examples() {
+  const char* all = std::getenv("NCINTERP_REGRESSION_ALL");
+  if (all && std::string(all) == "1") return {std::begin(kExamples), std::end(kExamples)};
+  std::vector<Example> some;
+  for (const Example& e : kExamples)
+    for (const char* name : {"circle_m1", "table_m3", "naca_lednicer_m3", "part_arcs", "part_cutter_right"})
+      if (e.name == name) some.push_back(e);
+  return some;
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, RampedRegression, ::testing::ValuesIn(ramped_examples()),
                          [](const ::testing::TestParamInfo<Example>& i) { return i.param.name; });
 
 // A short run of the soak's random contours, golden and RTL (the soak runs hundreds).
