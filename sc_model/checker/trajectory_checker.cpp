@@ -147,14 +147,16 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
     if (step[a]) (a == 0 ? pos_.x : pos_.y) += dir[a] ? 1 : -1;
 
   // Block boundaries: a load shows as busy rising or block_n_o changing; two consecutive
-  // line blocks with the same N are told apart by the documented block time.
+  // blocks with the same N are told apart by the documented block time or by the pulses.
+  // Between the last pulse of the one and the first of the other (same_n_by_pulses()) the
+  // outputs may already be the next block's: the direction and saturation rules wait.
+  const bool pulsed = step[0] || step[1];
   bool load = prev_.loads(o);
-  if (!load && o.busy && active_ && options_.schedule && !ramped() && timed(blocks_[cur_]) &&
-      cycle == results_[cur_].load_cycle + schedule_.duration() && cur_ + 1 < blocks_.size() &&
-      blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n)
+  if (!load && o.busy && same_n_by_time() && cycle == results_[cur_].load_cycle + schedule_.duration())
     load = true;
-  if (active_ && (load || !o.busy)) end_block(cycle);
-  if (load) start_block(cycle, o);
+  const bool between = !load && o.busy && same_n_by_pulses();
+  if (active_ && (load || !o.busy || (between && pulsed))) end_block(cycle);
+  if (load || (between && pulsed)) start_block(cycle, o, !between);
   if (loaded_ > 0 && !o.busy && !o.done && !o.error) ++gap_clocks_;
 
   if (o.pos_x != pos_.x || o.pos_y != pos_.y)
@@ -162,13 +164,13 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
            "position counters show " + point_text({o.pos_x, o.pos_y}) + ", the pulses add up to " +
                point_text(pos_));
 
-  const bool pulsed = step[0] || step[1];
   if (active_) {
     // The direction outputs are held for the whole block.
     const ProgrammedBlock& b = blocks_[cur_];
     const int64_t d[2] = {b.tape.dx, b.tape.dy};
+    const bool waiting = between && !pulsed;
     for (int a = 0; a < 2; ++a) {
-      const bool known = !b.is_arc() || d[a] != 0;
+      const bool known = (!b.is_arc() || d[a] != 0) && !waiting;
       if (known && dir[a] != expected_dir_[a])
         report(Rule::kDirection, cycle,
                std::string("dir_") + (a == 0 ? "x" : "y") + "_o = " + (dir[a] ? "1" : "0") +
@@ -180,7 +182,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
         check_schedule(cycle, pulsed);
       else if (pulsed)
         check_order(cycle);
-      if (o.feed_saturated != schedule_.saturated())
+      if (o.feed_saturated != schedule_.saturated() && !waiting)
         report(Rule::kDuration, cycle,
                std::string("feed_saturated_o = ") + (o.feed_saturated ? "1" : "0") +
                    ", documented " +
@@ -216,7 +218,21 @@ uint64_t TrajectoryChecker::quiet_limit() const {
   return next - 1;
 }
 
-void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
+bool TrajectoryChecker::same_n_next() const {
+  return active_ && cur_ + 1 < blocks_.size() && blocks_[cur_ + 1].tape.n == blocks_[cur_].tape.n;
+}
+
+bool TrajectoryChecker::same_n_by_time() const {
+  return same_n_next() && options_.schedule && !ramped() && timed(blocks_[cur_]);
+}
+
+bool TrajectoryChecker::same_n_by_pulses() const {
+  if (!same_n_next() || same_n_by_time()) return false;
+  const ProgrammedBlock& b = blocks_[cur_];
+  return progress_[0] == std::llabs(b.tape.dx) && progress_[1] == std::llabs(b.tape.dy);
+}
+
+void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o, bool load_known) {
   if (loaded_ >= blocks_.size()) {
     active_ = false;
     report(Rule::kSequence, cycle,
@@ -225,6 +241,7 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o) {
   }
   cur_ = loaded_++;
   active_ = true;
+  load_known_ = load_known;
   reported_ = 0;
   const ProgrammedBlock& b = blocks_[cur_];
   BlockResult& r = results_[cur_];
@@ -259,7 +276,8 @@ void TrajectoryChecker::end_block(uint64_t cycle) {
                  std::to_string(d[a] >= 0 ? progress_[a] : -progress_[a]) + " BLU, programmed " +
                  std::to_string(d[a]));
   }
-  if (options_.schedule && timed(b) && (ramped() ? r.clocks < schedule_.duration() : r.clocks != schedule_.duration()))
+  if (options_.schedule && timed(b) && load_known_ &&
+      (ramped() ? r.clocks < schedule_.duration() : r.clocks != schedule_.duration()))
     report(Rule::kDuration, cycle,
            "block took " + std::to_string(r.clocks) + " clocks, documented " +
                (ramped() ? "at least " : "") + std::to_string(schedule_.duration()));

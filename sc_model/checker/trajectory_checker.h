@@ -172,7 +172,9 @@ class TrajectoryChecker {
   uint64_t gap_clocks() const { return gap_clocks_; }
 
  private:
-  void start_block(uint64_t cycle, const InterpOutputs& o);
+  // load_known: the load shows on the outputs or at its documented clock; false: it was
+  // placed at the block's first pulse (same_n_by_pulses()), so its duration is unknown.
+  void start_block(uint64_t cycle, const InterpOutputs& o, bool load_known = true);
   void end_block(uint64_t cycle);
   void on_pulse(uint64_t cycle, const bool step[2], const bool dir[2]);
   void check_schedule(uint64_t cycle, bool pulsed);
@@ -181,6 +183,13 @@ class TrajectoryChecker {
   // The ramp or the operator's holds move the iterations off the documented clocks: the
   // schedule rule checks their order, the duration rule a lower bound.
   bool ramped() const { return options_.accel_step > 0 || options_.operator_holds; }
+  // Two consecutive blocks with the same N (a tape without N words) show no load on the
+  // outputs. A straight block's documented time places the load where nothing moves it;
+  // otherwise (the ramp, holds, arcs) the playing block is over once all its pulses have
+  // come, and the next pulse is the next block's.
+  bool same_n_next() const;
+  bool same_n_by_time() const;
+  bool same_n_by_pulses() const;
   void report(Rule rule, uint64_t cycle, std::string detail);
 
   std::vector<ProgrammedBlock> blocks_;
@@ -200,6 +209,7 @@ class TrajectoryChecker {
   size_t loaded_ = 0;            // blocks loaded so far
   int64_t progress_[2] = {0, 0}; // pulses along the block's direction, per axis
   bool expected_dir_[2] = {true, true};
+  bool load_known_ = true;       // see start_block
   LineSchedule schedule_;
   // A straight block's feed step S and its schedule (line_schedule.h) on this machine.
   unsigned __int128 step_of(const ProgrammedBlock& b) const;

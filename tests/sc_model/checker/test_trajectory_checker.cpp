@@ -106,6 +106,47 @@ TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerati
   }
 }
 
+// A tape without N words (every block the same N) shows no load on the outputs between
+// its blocks. Ramped or held, each block is over once all its pulses have come: such runs
+// pass every rule with every block's own pulses, and a checker told of one pulse more in
+// the first block than the engine played fails.
+TEST(TrajectoryChecker, BlocksWithTheSameNRampedOrHeldAreToldApartByTheirPulses) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    std::mt19937 rng(14);
+    CheckSetup setup;
+    setup.clock_hz = 1e6;
+    setup.arch = arch;
+    setup.reader_cps = 1e6;
+    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+    tape::Program p = test::random_line_program(rng, 8, 12, modulus, 30000, 60000);
+    for (tape::Block& b : p.blocks) b.n = 7;
+    for (const double accel : {500.0, 0.0}) {
+      setup.accel_mm_s2 = accel;
+      setup.events = {{50000, OperatorEvent::kHold}, {90000, OperatorEvent::kStart}};
+      const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
+      ASSERT_TRUE(out.passed()) << arch_name(arch) << " accel " << accel << ": " << first_violation(*out.checker);
+      for (size_t k = 0; k < p.blocks.size(); ++k) {
+        EXPECT_EQ(out.checker->results()[k].pulses[0], static_cast<uint64_t>(std::llabs(p.blocks[k].dx)));
+        EXPECT_EQ(out.checker->results()[k].pulses[1], static_cast<uint64_t>(std::llabs(p.blocks[k].dy)));
+      }
+    }
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, 500.0);
+    cfg.arch = arch;
+    CheckerOptions co;
+    co.feed_modulus = cfg.feed_modulus;
+    co.lead_bits = SerialDda::player_lead_bits(cfg);
+    co.rapid_step = cfg.rapid_step_on_port();
+    co.accel_step = cfg.accel_step;
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
+    tape::Program told = p;
+    told.blocks[0].dx += told.blocks[0].dx >= 0 ? 1 : -1;
+    TrajectoryChecker c(lay_out(told), nullptr, co);
+    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+    c.finish(trace.back());
+    EXPECT_GT(c.violation_count(), 0u) << arch_name(arch);
+  }
+}
+
 // Feed hold in check (--events): a run held and started passes every rule; a checker told
 // of a hold the engine never got reports the pulses in the held stretch, and only them.
 TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
