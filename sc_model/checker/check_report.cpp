@@ -102,6 +102,16 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["run_seconds"] = o.seconds;
   j["done"] = o.run.last.done;
   j["final_position"] = f.xy(c.position());
+  if (!c.hold_stops().empty()) {
+    // Each feed hold: when it was pressed, when its last pulse came (at rest) and where.
+    j["holds"] = json::array();
+    for (const HoldStop& h : c.hold_stops())
+      j["holds"].push_back({{"pressed_s", static_cast<double>(h.pressed) / ctx.setup.clock_hz},
+                            {"at_rest_s", static_cast<double>(h.at_rest) / ctx.setup.clock_hz},
+                            {"resumed_s", h.resumed == UINT64_MAX ? json(nullptr)
+                                                                  : json(static_cast<double>(h.resumed) / ctx.setup.clock_hz)},
+                            {"position", f.xy(h.position)}});
+  }
   j["pulse_clocks"] = c.pulse_count();
   j["path_error"] = stat_json(c.path_error(), c, f);
   j["path_error"]["measured_against"] = "the programmed block (chord or arc) from the tape";
@@ -203,6 +213,14 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
     s << "  acceleration (straight blocks): max X " << fmt("%.1f", a.max_mm_s2[0]) << ", Y "
       << fmt("%.1f", a.max_mm_s2[1]) << " mm/s^2, limit " << fmt("%g", a.limit_mm_s2)
       << " mm/s^2; worst " << fmt("%.2f", a.worst_ratio) << " of limit + allowance\n";
+  }
+  for (const HoldStop& h : c.hold_stops()) {
+    s << "  hold at " << fmt("%.6g", h.pressed / ctx.setup.clock_hz) << " s: at rest "
+      << fmt("%.3g", (h.at_rest - h.pressed) / ctx.setup.clock_hz) << " s later at ("
+      << fmt("%.3f", (f.start.x + h.position.x) * o.blu_mm) << ", "
+      << fmt("%.3f", (f.start.y + h.position.y) * o.blu_mm) << ") mm, ";
+    if (h.resumed == UINT64_MAX) s << "never resumed\n";
+    else s << "resumed at " << fmt("%.6g", h.resumed / ctx.setup.clock_hz) << " s\n";
   }
   if (c.violation_count() == 0) {
     s << "  every pulse rule holds; PASS\n";

@@ -112,6 +112,7 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
     for (const BlockResult& r : results_) rapid.push_back(r.rapid), bounds.push_back(r.bound);
     reference_->set_tool_path(blocks_, rapid, bounds);
   }
+  for (const auto& [hold, start] : options_.holds) hold_stops_.push_back({hold, start, hold, {}});
 }
 
 void TrajectoryChecker::report(Rule rule, uint64_t cycle, std::string detail) {
@@ -192,11 +193,15 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }
   if (pulsed) {
-    for (const auto& [hold, start] : options_.holds)
-      if (cycle > hold + options_.hold_settle && cycle <= start)
+    for (HoldStop& h : hold_stops_) {
+      if (cycle > h.resumed) continue;
+      h.position = pos_;  // up to the press, and each pulse while it brakes
+      if (cycle > h.pressed) h.at_rest = cycle;
+      if (cycle > h.pressed + options_.hold_settle)
         report(Rule::kHeld, cycle,
-               "step pulse while held: hold pressed at clock " + std::to_string(hold) + ", start " +
-                   (start == UINT64_MAX ? std::string("never") : "at " + std::to_string(start)));
+               "step pulse while held: hold pressed at clock " + std::to_string(h.pressed) + ", start " +
+                   (h.resumed == UINT64_MAX ? std::string("never") : "at " + std::to_string(h.resumed)));
+    }
   }
   prev_.keep(o);
 }

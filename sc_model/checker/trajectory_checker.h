@@ -136,6 +136,14 @@ struct CheckerOptions {
   size_t max_violations = 1000;  // details kept; all are counted
 };
 
+// Where a feed hold brought the machine to rest: its last pulse after the press (or the
+// press itself, when no pulse came after it) and the position there.
+struct HoldStop {
+  uint64_t pressed = 0, resumed = UINT64_MAX;  // the hold's press, the next start's
+  uint64_t at_rest = 0;                        // the clock of the last pulse in between
+  GridPoint position;                          // BLU from the tape start, at rest
+};
+
 class TrajectoryChecker {
  public:
   // reference may be null (no contour: only the interpolator's error and the rules); with
@@ -168,6 +176,7 @@ class TrajectoryChecker {
   const ErrorStat& path_error() const { return path_; }
   const ErrorStat& total_error() const { return total_; }
   GridPoint position() const { return pos_; }
+  const std::vector<HoldStop>& hold_stops() const { return hold_stops_; }  // one per hold
   uint64_t cycles() const { return last_cycle_; }
   uint64_t gap_clocks() const { return gap_clocks_; }
 
@@ -210,6 +219,7 @@ class TrajectoryChecker {
   int64_t progress_[2] = {0, 0}; // pulses along the block's direction, per axis
   bool expected_dir_[2] = {true, true};
   bool load_known_ = true;       // see start_block
+  std::vector<HoldStop> hold_stops_;
   LineSchedule schedule_;
   // A straight block's feed step S and its schedule (line_schedule.h) on this machine.
   unsigned __int128 step_of(const ProgrammedBlock& b) const;

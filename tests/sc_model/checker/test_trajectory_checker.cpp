@@ -2,6 +2,7 @@
 // independent computation) and on hand-made output sequences that break one rule each.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -162,6 +163,19 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
     setup.events = {{50000, OperatorEvent::kHold}, {250000, OperatorEvent::kStart}};
     const CheckOutcome held = run_check(frames_of(p), nullptr, setup);
     ASSERT_TRUE(held.passed()) << arch_name(arch) << ": " << first_violation(*held.checker);
+    // The hold's stop: its last pulse after the press, braking, and the position there.
+    ASSERT_EQ(held.checker->hold_stops().size(), 1u);
+    const HoldStop& stop = held.checker->hold_stops()[0];
+    EXPECT_EQ(stop.pressed, 50000u);
+    EXPECT_EQ(stop.resumed, 250000u);
+    EXPECT_GT(stop.at_rest, stop.pressed);
+    const std::vector<PulseSample>& pulses = held.checker->pulses();
+    const auto after = std::find_if(pulses.begin(), pulses.end(), [&](const PulseSample& s) { return s.cycle > stop.at_rest; });
+    ASSERT_NE(after, pulses.begin());
+    EXPECT_EQ(std::prev(after)->cycle, stop.at_rest);
+    EXPECT_EQ(std::prev(after)->position, stop.position);
+    ASSERT_NE(after, pulses.end());
+    EXPECT_GT(after->cycle, stop.resumed);
     // The engine without the presses, the checker with them.
     InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
     cfg.arch = arch;
