@@ -16,6 +16,16 @@ namespace {
 
 using test::frames_of;
 
+// What the checker is told of the machine cfg (as check_session does).
+CheckerOptions options_for(const InterpConfig& cfg) {
+  CheckerOptions co;
+  co.feed_modulus = cfg.feed_modulus;
+  co.lead_bits = SerialDda::player_lead_bits(cfg);
+  co.rapid_step = cfg.rapid_step_on_port();
+  co.accel_step = cfg.accel_step;
+  return co;
+}
+
 std::string first_violation(const TrajectoryChecker& c) {
   if (c.violations().empty()) return "none";
   const Violation& v = c.violations().front();
@@ -91,11 +101,7 @@ TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerati
     const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
     InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
     cfg.arch = arch;
-    CheckerOptions co;
-    co.feed_modulus = cfg.feed_modulus;
-    co.lead_bits = SerialDda::player_lead_bits(cfg);
-    co.rapid_step = cfg.rapid_step_on_port();
-    co.accel_step = cfg.accel_step;
+    CheckerOptions co = options_for(cfg);
     cfg.accel_step *= 8;
     const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
     TrajectoryChecker c(lay_out(p), nullptr, co);
@@ -133,11 +139,7 @@ TEST(TrajectoryChecker, BlocksWithTheSameNRampedOrHeldAreToldApartByTheirPulses)
     }
     InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, 500.0);
     cfg.arch = arch;
-    CheckerOptions co;
-    co.feed_modulus = cfg.feed_modulus;
-    co.lead_bits = SerialDda::player_lead_bits(cfg);
-    co.rapid_step = cfg.rapid_step_on_port();
-    co.accel_step = cfg.accel_step;
+    CheckerOptions co = options_for(cfg);
     const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
     tape::Program told = p;
     told.blocks[0].dx += told.blocks[0].dx >= 0 ? 1 : -1;
@@ -179,11 +181,7 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
     // The engine without the presses, the checker with them.
     InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
     cfg.arch = arch;
-    CheckerOptions co;
-    co.feed_modulus = cfg.feed_modulus;
-    co.lead_bits = SerialDda::player_lead_bits(cfg);
-    co.rapid_step = cfg.rapid_step_on_port();
-    co.accel_step = cfg.accel_step;
+    CheckerOptions co = options_for(cfg);
     co.operator_holds = true;
     co.holds = {{50000, 250000}};
     co.hold_settle = 40000;
@@ -434,10 +432,7 @@ TEST(TrajectoryChecker, TraversesAreTheTapesG00BlocksAndOnlyThem) {
     ReferenceOptions ro;
     ro.blu_mm = 0.001;
     ReferenceContour ref(c, ro);
-    CheckerOptions co;
-    co.feed_modulus = cfg.feed_modulus;
-    co.lead_bits = SerialDda::player_lead_bits(cfg);
-    co.rapid_step = cfg.rapid_step_on_port();
+    CheckerOptions co = options_for(cfg);
     auto checker = std::make_unique<TrajectoryChecker>(lay_out(p), &ref, co);
     for (size_t k = 0; k < trace.size(); ++k) checker->observe(k, trace[k]);
     checker->finish(trace.back());
