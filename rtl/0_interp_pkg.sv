@@ -66,22 +66,25 @@ package interp_pkg;
   endfunction
 
   // Error codes: error_code_o (0 while error_o is low).
-  localparam int ErrCodeWidth = 4;
+  localparam int ErrCodeWidth = 5;
   typedef enum logic [ErrCodeWidth-1:0] {
-    ErrNone                 = 4'd0,   // no error
-    ErrParity               = 4'd1,   // parity error
-    ErrUnknownCharacter     = 4'd2,   // unknown address letter or character
-    ErrMalformedNumber      = 4'd3,   // malformed number
-    ErrValueTooWide         = 4'd4,   // value too wide for its register
-    ErrMissingEndOfBlock    = 4'd5,   // missing end of block
-    ErrUnsupportedCode      = 4'd6,   // unsupported G or M code
-    ErrTruncatedTape        = 4'd7,   // truncated tape (tape ended before M02/M30)
-    ErrBlockAfterEnd        = 4'd8,   // block after end of program
-    ErrMissingFeed          = 4'd9,   // missing feed (no F programmed, or F0)
-    ErrArcCrossesQuadrant   = 4'd10,  // arc not inside one quadrant
-    ErrArcEndpointOffCircle = 4'd11,  // arc endpoint off its circle
-    ErrArcZeroRadius        = 4'd12,  // zero-radius arc
-    ErrNoCircleMode         = 4'd13   // arc block, but the interpolator is built without circle mode (lines only)
+    ErrNone                 = 5'd0,   // no error
+    ErrParity               = 5'd1,   // parity error
+    ErrUnknownCharacter     = 5'd2,   // unknown address letter or character
+    ErrMalformedNumber      = 5'd3,   // malformed number
+    ErrValueTooWide         = 5'd4,   // value too wide for its register
+    ErrMissingEndOfBlock    = 5'd5,   // missing end of block
+    ErrUnsupportedCode      = 5'd6,   // unsupported G or M code
+    ErrTruncatedTape        = 5'd7,   // truncated tape (tape ended before M02/M30)
+    ErrBlockAfterEnd        = 5'd8,   // block after end of program
+    ErrMissingFeed          = 5'd9,   // missing feed (no F programmed, or F0)
+    ErrArcCrossesQuadrant   = 5'd10,  // arc not inside one quadrant
+    ErrArcEndpointOffCircle = 5'd11,  // arc endpoint off its circle
+    ErrArcZeroRadius        = 5'd12,  // zero-radius arc
+    ErrNoCircleMode         = 5'd13,  // arc block, but the interpolator is built without circle mode (lines only)
+    ErrEmergencyStop        = 5'd14,  // emergency stop
+    ErrLimitX               = 5'd15,  // X limit switch
+    ErrLimitY               = 5'd16   // Y limit switch
   } tape_error_e;
 
   // Tape characters: a frame's 7 bits without the parity bit (ISO 840 bit 7).

@@ -55,7 +55,7 @@ module arc_geometry #(
   output logic                add_y_o,
   output logic [KWidth-1:0]   k_o,
   output logic                error_o,
-  output logic [3:0]          error_code_o
+  output logic [interp_pkg::ErrCodeWidth-1:0] error_code_o
 );
 
   // Per axis, from the sum: the end's magnitude is 0 (end_zero), its carry out of bit W - 1

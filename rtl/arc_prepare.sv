@@ -39,7 +39,7 @@ module arc_prepare #(
   input  logic                 ccw_i,
   output logic                 done_o,      // the result is final in this clock
   output logic                 err_o,       // ... and it is an error
-  output logic [3:0]           err_code_o,
+  output logic [interp_pkg::ErrCodeWidth-1:0] err_code_o,
   output logic                 iterate_o,   // a dry-run iteration at this edge
   // The magnitudes of I, J, X, Y turn one place at this edge (the decoder's registers, bit
   // 0 first): the radius check and the dry run read them one bit per clock.
@@ -56,7 +56,7 @@ module arc_prepare #(
 
   logic                start;
   logic                grow_x, grow_y, geo_err, add_x, add_y, geo_shift, geo_done;
-  logic [3:0]          geo_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] geo_code;
   logic [KWidth-1:0]   k;
   logic                dry_iterate, dry_done, check_done, check_ok, check_shift;
 
@@ -85,7 +85,7 @@ module arc_prepare #(
       .y_bit_i(shift_o && j_i[0]), .cnt_x_bit_i(shift_o && dx_i[0]),
       .cnt_y_bit_i(shift_o && dy_i[0]), .bit_o(dry_bit),
       .grow_x_i(grow_x), .grow_y_i(grow_y), .dir_x_i(1'b0), .dir_y_i(1'b0),
-      .strobe_i(running_q), .iterate_o(dry_iterate),
+      .strobe_i(running_q), .mute_i(1'b0), .iterate_o(dry_iterate),
       .carry_x_o(dry_carry_x), .carry_y_o(dry_carry_y), .step_x_o(dry_step_x),
       .dir_x_o(dry_dir_x), .step_y_o(dry_step_y), .dir_y_o(dry_dir_y),
       .words_o(dry_words), .done_o(dry_done)

@@ -60,6 +60,9 @@ module dda_serial #(
   input  logic                dir_x_i,    // 1 = plus
   input  logic                dir_y_i,
   input  logic                strobe_i,   // start an iteration (if idle and not done)
+  // The machine has stopped (interp_top's E-stop or a limit): an iteration in flight emits
+  // no more pulses, so no pulse comes after the stop's clock and the counters stay true.
+  input  logic                mute_i,
   output logic                iterate_o,  // an iteration starts at this edge
   output logic                carry_x_o,  // pulses emitted at this edge (for the counters)
   output logic                carry_y_o,
@@ -197,7 +200,7 @@ module dda_serial #(
   always_comb begin
     carry_x_o = 1'b0;
     carry_y_o = 1'b0;
-    if (active && top_bit) begin
+    if (active && top_bit && !mute_i) begin
       if (line) begin
         carry_x_o = !second && acc_cout;
         carry_y_o = !second && mag_cout;

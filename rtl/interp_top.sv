@@ -59,6 +59,15 @@ module interp_top #(
   // The operator: feed hold and cycle start (feed_generator.sv).
   input  logic                    hold_i,
   input  logic                    start_i,
+  // The machine's stops: E-stop and the X and Y limit switches (high: tripped). The first
+  // seen at an edge while the program runs stops the machine for good (until reset): the
+  // error state with its own code from that edge, and from the next edge on no block
+  // loads, no iteration starts and a serial iteration in flight emits nothing, so the
+  // last step pulse is one of that edge and the position counters count exactly the
+  // pulses that went out (the status logic below).
+  input  logic                    estop_i,
+  input  logic                    limit_x_i,
+  input  logic                    limit_y_i,
   // Tape reader.
   input  logic [7:0]              frame_i,
   input  logic                    frame_valid_i,
@@ -76,7 +85,7 @@ module interp_top #(
   output logic                    busy_o,
   output logic                    done_o,
   output logic                    error_o,
-  output logic [3:0]              error_code_o,
+  output logic [interp_pkg::ErrCodeWidth-1:0] error_code_o,
   output logic [SeqWidth-1:0]     error_block_o,
   output logic [OffsetWidth-1:0]  error_offset_o,
   output logic                    feed_saturated_o
@@ -110,7 +119,7 @@ module interp_top #(
   // Decoder -> buffer.
   logic                   dec_valid, buf_ready;
   logic                   dec_end, dec_tape_ended, dec_err;
-  logic [3:0]             dec_err_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] dec_err_code;
   logic [SeqWidth-1:0]    dec_err_block;
   logic [OffsetWidth-1:0] dec_err_offset;
 
@@ -125,9 +134,14 @@ module interp_top #(
   logic              carry_x, carry_y;
 
   // busy_q: a block is loaded and not finished. block_n_q: its N (the last one when idle).
-  // done_q / error_q: the machine has stopped at the end of the program / on a tape error.
+  // done_q / error_q: the machine has stopped at the end of the program / on a tape error
+  // or a stop. stop_q: which stop input stopped it (0: none, 1: E-stop, 2: X limit,
+  // 3: Y limit).
   logic                busy_q, busy_d, done_q, done_d, error_q, error_d;
   logic [SeqWidth-1:0] block_n_q, block_n_d;
+  logic [1:0]          stop_q, stop_d;
+  logic                stopped;
+  assign stopped = stop_q != '0;
 
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
@@ -155,8 +169,9 @@ module interp_top #(
 
   assign next_arc = interp_pkg::motion_is_arc(next_block.motion);
 
-  // A block loads when one waits and the player is idle or finishing the previous block.
-  assign load = next_valid && (!busy_q || finished);
+  // A block loads when one waits and the player is idle or finishing the previous block,
+  // unless a stop input has stopped the machine.
+  assign load = next_valid && (!busy_q || finished) && !stopped;
 
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits),
                    .Accel(Accel), .IterWidth(IncWidth + 1))
@@ -165,7 +180,7 @@ module interp_top #(
     .load_i(load), .step_i(next_block.step), .step_over_i(next_block.step_over),
     .iterations_i((IncWidth + 1)'(next_block.iterations)), .accel_step_i, .hold_i, .start_i,
     .run_step_i(play_step),
-    .run_i(busy_q && !finished), .modulus_i(feed_modulus_i),
+    .run_i(busy_q && !finished && !stopped), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)
   );
 
@@ -207,7 +222,7 @@ module interp_top #(
       .cnt_x_bit_i(word_bit(next_block.dx, bit_q)), .cnt_y_bit_i(word_bit(next_block.dy, bit_q)),
       .bit_o(bit_q), .grow_x_i(next_block.grow_x), .grow_y_i(next_block.grow_y),
       .dir_x_i(!next_block.dx_neg), .dir_y_i(!next_block.dy_neg),
-      .strobe_i(strobe), .iterate_o(iterate),
+      .strobe_i(strobe), .mute_i(stopped), .iterate_o(iterate),
       .carry_x_o(carry_x), .carry_y_o(carry_y),
       .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
       .words_o(words), .done_o(finished)
@@ -254,6 +269,17 @@ module interp_top #(
     // yet readable: next_valid is still low).
     error_d = error_q | (dec_err & !busy_q & buf_ready);
     done_d  = done_q | (dec_end & dec_tape_ended & !busy_q & buf_ready);
+    // A stop input, while the program runs (not after its end or a tape error): E-stop
+    // first, then X, then Y.
+    stop_d = stop_q;
+    if (!stopped && !done_q && !error_q) begin
+      if (estop_i) stop_d = 2'd1;
+      else if (limit_x_i) stop_d = 2'd2;
+      else if (limit_y_i) stop_d = 2'd3;
+    end
+    // A stop wins over an end of program raised at the same edge, and none comes after it.
+    error_d = error_d | (stop_d != '0);
+    done_d  = done_d & (stop_d == '0);
   end
 
   always_ff @(posedge clk_i) begin
@@ -262,11 +288,13 @@ module interp_top #(
       block_n_q <= '0;
       done_q    <= 1'b0;
       error_q   <= 1'b0;
+      stop_q    <= '0;
     end else begin
       busy_q    <= busy_d;
       block_n_q <= block_n_d;
       done_q    <= done_d;
       error_q   <= error_d;
+      stop_q    <= stop_d;
     end
   end
 
@@ -274,9 +302,18 @@ module interp_top #(
   assign busy_o           = busy_q;
   assign done_o           = done_q;
   assign error_o          = error_q;
-  assign error_code_o     = error_q ? dec_err_code : '0;
-  assign error_block_o    = error_q ? dec_err_block : '0;
-  assign error_offset_o   = error_q ? dec_err_offset : '0;
+  // A stop's report: its code, the block playing (or the last played), no tape offset.
+  logic [interp_pkg::ErrCodeWidth-1:0] stop_code;
+  always_comb begin
+    case (stop_q)
+      2'd1:    stop_code = interp_pkg::ErrEmergencyStop;
+      2'd2:    stop_code = interp_pkg::ErrLimitX;
+      default: stop_code = interp_pkg::ErrLimitY;
+    endcase
+  end
+  assign error_code_o     = !error_q ? '0 : stopped ? stop_code : dec_err_code;
+  assign error_block_o    = !error_q ? '0 : stopped ? block_n_q : dec_err_block;
+  assign error_offset_o   = error_q && !stopped ? dec_err_offset : '0;
   assign feed_saturated_o = busy_q & saturated;
 
 endmodule

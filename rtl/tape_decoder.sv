@@ -86,7 +86,7 @@ module tape_decoder #(
   output logic                   tape_ended_o;
   // An error is held (the decoder has stopped).
   output logic                   err_o;
-  output logic [3:0]             err_code_o;
+  output logic [interp_pkg::ErrCodeWidth-1:0] err_code_o;
   output logic [SeqWidth-1:0]    err_block_o;
   output logic [OffsetWidth-1:0] err_offset_o;
 
@@ -115,7 +115,7 @@ module tape_decoder #(
   // Word parser: its error, and the word a delimiter ends or starts.
   logic                   body_char;  // a body character reaches the parser at this edge
   logic                   word_err, delimiter, word_end, word_neg, word_start, word_err_at_word;
-  logic [3:0]             word_err_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] word_err_code;
   logic [OffsetWidth-1:0] word_offset;
   logic [6:0]             word_letter;
   logic [NumWidth-1:0]    word_value;
@@ -164,19 +164,19 @@ module tape_decoder #(
   // error's edge, and no N is committed in StError; its offset is the frame input's
   // counter, which the error's edge sets to it (fail_back, fail_word) and which no frame
   // moves after it.
-  logic [3:0]             err_code_q, err_code_d;
+  logic [interp_pkg::ErrCodeWidth-1:0] err_code_q, err_code_d;
 
   // Combinational helpers.
   logic                   update;       // the block assembly's registers change at this edge
   state_e                 state_next;   // the state after this edge
   logic                   tape_cut;     // truncated tape found at this edge
   logic                   fail;         // an error is found at this edge
-  logic [3:0]             fail_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] fail_code;
   // The error's offset: the frame processed at this edge (or, with none, the next one);
   // fail_back: the last frame processed; fail_word: the word's letter (word_offset).
   logic                   fail_back, fail_word;
   logic                   word_ok;      // the word ended by this frame was committed
-  logic [3:0]             word_refusal; // else why not: an unsupported code, or an arc
+  logic [interp_pkg::ErrCodeWidth-1:0] word_refusal; // else why not: an unsupported code, or an arc
                                         // without circle mode
   logic                   word_commit;  // a word ends at this edge (its register loads)
   logic                   clear_block;  // the block's per-block registers clear at this edge
@@ -185,7 +185,7 @@ module tape_decoder #(
   // their own signals because Icarus 11 mistypes an enum literal used in a port connection.
   logic                   preparing, in_arc, arc_done, arc_err, arc_grow_x, arc_grow_y;
   logic                   arc_iterate, arc_shift;
-  logic [3:0]             arc_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] arc_code;
   logic [KWidth-1:0]      arc_k;
 
   // Bit length of a value (position of its highest 1 plus one; 0 for 0).

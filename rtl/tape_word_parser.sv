@@ -45,7 +45,7 @@ module tape_word_parser #(
   // with the error's offset: the character's, or (err_at_word_o) the word's letter
   // (word_offset_o) for an incomplete word.
   output logic                   err_o,
-  output logic [3:0]             err_code_o,
+  output logic [interp_pkg::ErrCodeWidth-1:0] err_code_o,
   output logic                   err_at_word_o,
   // The character ends the word being read, if any (not a digit, sign, point or blank).
   output logic                   delimiter_o,

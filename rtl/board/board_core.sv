@@ -84,7 +84,7 @@ module board_core #(
   output logic        obs_busy_o,
   output logic        obs_done_o,
   output logic        obs_error_o,
-  output logic [3:0]  obs_error_code_o,
+  output logic [interp_pkg::ErrCodeWidth-1:0] obs_error_code_o,
   output logic [SeqWidth-1:0]    obs_error_block_o,
   output logic [OffsetWidth-1:0] obs_error_offset_o,
   output logic        obs_feed_saturated_o,
@@ -108,7 +108,7 @@ module board_core #(
   logic [PosWidth-1:0]    i_pos_x, i_pos_y;
   logic [OffsetWidth-1:0] i_error_offset;
   logic [SeqWidth-1:0]    i_block_n, i_error_block;
-  logic [3:0]             i_error_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] i_error_code;
 
   // tape_end_q: the EOT frame has been read. xoff_q: the host has been asked to stop.
   // cts_n_q: CTS# to the host. board_err_q: board error code.
@@ -150,6 +150,7 @@ module board_core #(
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
+    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
     .frame_ready_o(frame_ready),
     .step_x_o(i_step_x), .dir_x_o(i_dir_x), .step_y_o(i_step_y), .dir_y_o(i_dir_y),
@@ -179,7 +180,7 @@ module board_core #(
   logic [BlockWidth-1:0] line_block;
   logic [FieldWidth-1:0] line_offset;
   assign any_error   = i_error || board_err_q != '0;
-  assign line_code   = board_err_q != '0 ? board_err_q : {4'd0, i_error_code};
+  assign line_code   = board_err_q != '0 ? board_err_q : 8'(i_error_code);
   assign line_block  = BlockWidth'(board_err_q != '0 ? i_block_n : i_error_block);
   assign line_offset = board_err_q != '0 ? written : FieldWidth'(i_error_offset);
 

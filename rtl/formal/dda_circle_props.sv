@@ -54,7 +54,7 @@ module dda_circle_props #(
 
   // The arc's geometry and the decoder's checks.
   logic              grow_x, grow_y, geo_err, add_x, add_y, geo_shift, geo_done;
-  logic [3:0]        geo_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] geo_code;
   logic [KWidth-1:0] k;
   arc_geometry #(.IncWidth(W), .KWidth(KWidth)) u_geometry (
     .clk_i, .rst_ni, .enable_i(1'b1), .shift_o(geo_shift), .done_o(geo_done),

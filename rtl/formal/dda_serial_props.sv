@@ -50,7 +50,7 @@ module dda_serial_props #(
 
   // The block's k and growth: a line's from its increments, an arc's from the geometry.
   logic              grow_x, grow_y, geo_err, add_x, add_y, geo_shift, geo_done;
-  logic [3:0]        geo_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] geo_code;
   logic [KWidth-1:0] arc_k, line_k, k;
   arc_geometry #(.IncWidth(W), .KWidth(KWidth)) u_geometry (
     .clk_i, .rst_ni, .enable_i(1'b1), .shift_o(geo_shift), .done_o(geo_done),
@@ -87,7 +87,7 @@ module dda_serial_props #(
     .x_bit_i(word_bit(f_i_q, bit_idx)), .y_bit_i(word_bit(f_j_q, bit_idx)),
     .cnt_x_bit_i(word_bit(f_dx_q, bit_idx)), .cnt_y_bit_i(word_bit(f_dy_q, bit_idx)),
     .bit_o(bit_idx), .grow_x_i(grow_x), .grow_y_i(grow_y),
-    .dir_x_i(!dx_neg_i), .dir_y_i(!dy_neg_i), .strobe_i(1'b1), .iterate_o(iterate),
+    .dir_x_i(!dx_neg_i), .dir_y_i(!dy_neg_i), .strobe_i(1'b1), .mute_i(1'b0), .iterate_o(iterate),
     .carry_x_o(s_carry_x), .carry_y_o(s_carry_y), .step_x_o(s_step_x), .dir_x_o(s_dir_x),
     .step_y_o(s_step_y), .dir_y_o(s_dir_y), .words_o(s_words), .done_o(s_done)
   );

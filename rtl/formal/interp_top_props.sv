@@ -11,7 +11,12 @@
 // - ap_done_end: done only after an M02/M30 word was read (outside comments, after the
 //   leader), with every block the decoder handed over loaded and finished;
 // - ap_pos_*: the position counters always equal the integrated pulses (+1 or -1 by dir,
-//   counted at the edge of the pulse).
+//   counted at the edge of the pulse), also after a stop;
+// - the stops (estop_i, limit_x_i, limit_y_i, free inputs): ap_stop_quiet, no step pulse
+//   after the clock that follows the edge that latched a stop (the pulse of that edge is
+//   the last), in both archs; ap_stop_raised, a stop input seen while the program runs
+//   raises the error with the input's code at that edge (E-stop before X before Y);
+//   ap_stop_named, a stop's code only after its input was seen.
 // The harness reads the taken frames with its own small recogniser of M words, counts the
 // blocks handed over and loaded (formal-tap lines: interp_top's decoder/buffer handshake and
 // load), and integrates the pulses. Environment: reset in the first clock, a static modulus
@@ -40,20 +45,24 @@ module interp_top_props #(
   input logic [MW-1:0] rapid_step_i,
   input logic [7:0]    frame_i,
   input logic          frame_valid_i,
-  input logic          tape_end_i
+  input logic          tape_end_i,
+  input logic          estop_i,
+  input logic          limit_x_i,
+  input logic          limit_y_i
 );
 
   logic          frame_ready, step_x, dir_x, step_y, dir_y, busy, done, error, saturated;
   logic [PW-1:0] pos_x, pos_y;
   logic [NW-1:0] block_n, error_block;
-  logic [3:0]    error_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] error_code;
   logic [OW-1:0] error_offset;
 
   interp_top #(
     .IncWidth(W), .FracDigits(0), .FeedWidth(FW), .FeedFracDigits(0), .PosWidth(PW),
     .SeqWidth(NW), .OffsetWidth(OW), .ModulusWidth(MW), .BitSerial(BS)
   ) u_dut (
-    .clk_i, .rst_ni, .feed_modulus_i, .rapid_step_i, .accel_step_i(MW'(0)), .hold_i(1'b0), .start_i(1'b0), .frame_i, .frame_valid_i, .tape_end_i,
+    .clk_i, .rst_ni, .feed_modulus_i, .rapid_step_i, .accel_step_i(MW'(0)), .hold_i(1'b0), .start_i(1'b0),
+    .estop_i, .limit_x_i, .limit_y_i, .frame_i, .frame_valid_i, .tape_end_i,
     .frame_ready_o(frame_ready), .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y),
     .dir_y_o(dir_y), .pos_x_o(pos_x), .pos_y_o(pos_y), .block_n_o(block_n), .busy_o(busy),
     .done_o(done), .error_o(error), .error_code_o(error_code), .error_block_o(error_block),
@@ -127,7 +136,7 @@ module interp_top_props #(
   always_comb begin
     if (!f_init) begin
       if (step_x || step_y) ap_step_busy: assert (busy);
-      if (done || error) ap_stopped: assert (!step_x && !step_y && !busy);
+      if (done || (error && !f_stop_error)) ap_stopped: assert (!step_x && !step_y && !busy);
       ap_not_both: assert (!(done && error));
       if (f_dec_err_q) ap_bad_block: assert (!(tap_dec_valid && tap_buf_ready));
       if (done) ap_done_end: assert (f_end_q && f_handed_q == f_loaded_q && !busy);
@@ -136,9 +145,38 @@ module interp_top_props #(
     end
   end
 
+  // The stops. f_stop_error: the error shown is a stop's. f_stop_age_q: edges since the one
+  // that latched it (saturating); f_seen_q: the stop inputs seen high at an edge so far.
+  logic       f_stop_error;
+  logic [1:0] f_stop_age_q;
+  logic [2:0] f_seen_q;
+  assign f_stop_error = error && error_code >= interp_pkg::ErrEmergencyStop;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      f_stop_age_q <= '0;
+      f_seen_q     <= '0;
+    end else begin
+      if (f_stop_error && f_stop_age_q != '1) f_stop_age_q <= f_stop_age_q + 1'b1;
+      f_seen_q <= f_seen_q | {limit_y_i, limit_x_i, estop_i};
+    end
+  end
+  always_comb begin
+    if (!f_init) begin
+      if (f_stop_error && f_stop_age_q != '0) ap_stop_quiet: assert (!step_x && !step_y);
+      if (error_code == interp_pkg::ErrEmergencyStop) ap_stop_named_e: assert (f_seen_q[0]);
+      if (error_code == interp_pkg::ErrLimitX) ap_stop_named_x: assert (f_seen_q[1]);
+      if (error_code == interp_pkg::ErrLimitY) ap_stop_named_y: assert (f_seen_q[2]);
+    end
+  end
+
   logic f_past_valid = 1'b0;
   always_ff @(posedge clk_i) begin
     f_past_valid <= 1'b1;
+    if (f_past_valid && $past(rst_ni) && !$past(done) && !$past(error) &&
+        ($past(estop_i) || $past(limit_x_i) || $past(limit_y_i)))
+      ap_stop_raised: assert (error && error_code == ($past(estop_i) ? interp_pkg::ErrEmergencyStop
+                                                     : $past(limit_x_i) ? interp_pkg::ErrLimitX
+                                                     : interp_pkg::ErrLimitY));
     if (f_past_valid && $past(rst_ni)) begin
       if ($past(error)) ap_error_sticky: assert (error && $stable(error_code)
                                                  && $stable(error_block) && $stable(error_offset));
@@ -153,6 +191,7 @@ module interp_top_props #(
     if (!f_init) begin
       cp_playing: cover (busy && f_loaded_q != '0);
       cp_error_after_block: cover (error && f_loaded_q != '0);
+      cp_stop_moved: cover (f_stop_error && (pos_x != '0 || pos_y != '0));
     end
   end
   if (CoverMotion) begin : g_cover_motion

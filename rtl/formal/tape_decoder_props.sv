@@ -55,7 +55,7 @@ module tape_decoder_props #(
   logic              frame_ready, blk_valid;
   logic              end_blk, tape_ended, err;
   logic [NW-1:0]     err_block;
-  logic [3:0]        err_code;
+  logic [interp_pkg::ErrCodeWidth-1:0] err_code;
   logic [OW-1:0]     err_offset;
   block_t            block;
 

@@ -88,7 +88,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["cutter_radius_mm"] = ctx.setup.cutter_radius_mm;
   if (ctx.setup.cutter_radius_mm > 0) j["cutter_side"] = ctx.setup.cutter_left ? "left" : "right";
   j["tape_start"] = f.xy({0, 0});
-  j["status"] = o.passed() ? "pass" : "fail";
+  j["status"] = !o.passed() ? "fail" : c.stopped() ? "stopped" : "pass";
   j["blocks"] = c.blocks().size();
   j["cycles"] = c.cycles();
   j["cycle_seconds"] = static_cast<double>(c.cycles()) / ctx.setup.clock_hz;
@@ -112,6 +112,12 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
                                                                   : json(static_cast<double>(h.resumed) / ctx.setup.clock_hz)},
                             {"position", f.xy(h.position)}});
   }
+  if (c.stopped())  // the E-stop or limit that ended the run: when, and where it stood
+    j["stop"] = {{"code", o.run.last.error_code},
+                 {"message", tape_error_message(static_cast<TapeError>(o.run.last.error_code))},
+                 {"block", o.run.last.error_block},
+                 {"pressed_s", static_cast<double>(c.cycles()) / ctx.setup.clock_hz},
+                 {"position", f.xy(c.position())}};
   j["pulse_clocks"] = c.pulse_count();
   j["path_error"] = stat_json(c.path_error(), c, f);
   j["path_error"]["measured_against"] = "the programmed block (chord or arc) from the tape";
@@ -222,8 +228,13 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
     if (h.resumed == UINT64_MAX) s << "never resumed\n";
     else s << "resumed at " << fmt("%.6g", h.resumed / ctx.setup.clock_hz) << " s\n";
   }
+  if (c.stopped())
+    s << "  " << tape_error_message(static_cast<TapeError>(o.run.last.error_code)) << " at "
+      << fmt("%.6g", c.cycles() / ctx.setup.clock_hz) << " s in block N" << o.run.last.error_block
+      << ": stopped at (" << fmt("%.3f", (f.start.x + c.position().x) * o.blu_mm) << ", "
+      << fmt("%.3f", (f.start.y + c.position().y) * o.blu_mm) << ") mm\n";
   if (c.violation_count() == 0) {
-    s << "  every pulse rule holds; PASS\n";
+    s << (c.stopped() ? "  every pulse rule holds up to the stop; STOPPED\n" : "  every pulse rule holds; PASS\n");
   } else {
     std::vector<Violation> sorted = c.violations();
     std::stable_sort(sorted.begin(), sorted.end(),

@@ -115,6 +115,10 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
       }
     co.holds.emplace_back(setup.events[k].cycle, start);
   }
+  if (const OperatorEvent* stop = first_stop(setup.events)) {
+    co.stop_cycle = stop->cycle;
+    co.stop_code = static_cast<uint8_t>(stop_error(stop->kind));
+  }
   // Settling: the ramp down from the fastest rate a block of the tape asks (S, an arc's
   // F 2^(k+1) as its N < 2^(k+1)), and a serial iteration in flight.
   unsigned __int128 fastest = 0;

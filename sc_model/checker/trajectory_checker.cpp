@@ -40,6 +40,7 @@ const char* rule_name(Rule rule) {
     case Rule::kSequence: return "sequence";
     case Rule::kComplete: return "complete";
     case Rule::kHeld: return "held";
+    case Rule::kStop: return "stop";
     case Rule::kAcceleration: return "accel";
     case Rule::kTotalError: return "tolerance";
   }
@@ -192,6 +193,10 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }
+  if (pulsed && cycle > options_.stop_cycle)
+    report(Rule::kStop, cycle,
+           "step pulse " + std::to_string(cycle - options_.stop_cycle) + " clock(s) after the stop at clock " +
+               std::to_string(options_.stop_cycle));
   if (pulsed) {
     for (HoldStop& h : hold_stops_) {
       if (cycle > h.resumed) continue;
@@ -422,9 +427,26 @@ void TrajectoryChecker::check_acceleration(uint64_t cycle) {
 }
 
 void TrajectoryChecker::finish(const InterpOutputs& o) {
-  if (o.error) {
+  const bool stop_due = last_cycle_ >= options_.stop_cycle;  // the run reached the stop's clock
+  if (o.error && o.error_code == options_.stop_code && options_.stop_cycle != UINT64_MAX) {
+    // Ended on the stop: at its clock, naming the block playing (or the last played).
+    const uint32_t n = loaded_ > 0 ? blocks_[cur_].tape.n : 0;
+    if (last_cycle_ != options_.stop_cycle)
+      report(Rule::kStop, last_cycle_,
+             "the stop's error came at clock " + std::to_string(last_cycle_) + ", the stop at clock " +
+                 std::to_string(options_.stop_cycle));
+    else if (o.error_block != n)
+      report(Rule::kStop, last_cycle_,
+             "the stop names block N" + std::to_string(o.error_block) + ", the block playing is N" +
+                 std::to_string(n));
+    stopped_ = true;
+  } else if (stop_due && !o.error) {
+    report(Rule::kStop, last_cycle_,
+           std::string("the stop at clock ") + std::to_string(options_.stop_cycle) + " did not stop the machine (" +
+               tape_error_message(static_cast<TapeError>(options_.stop_code)) + " expected)");
+  } else if (o.error) {
     report(Rule::kComplete, last_cycle_,
-           "the interpolator stopped on a tape error: block N" + std::to_string(o.error_block) +
+           "the interpolator stopped on an error: block N" + std::to_string(o.error_block) +
                ", offset " + std::to_string(o.error_offset) + ": " +
                tape_error_message(static_cast<TapeError>(o.error_code)));
   } else if (!o.done || loaded_ < blocks_.size()) {

@@ -25,8 +25,12 @@
 //             du / M BLU per clock^2 (times |d| / 2^k for the axis of d), measured from
 //             the times of the iterations that pulse, plus the allowance of one clock
 //             per iteration time (a strobe comes on the clock after the phase passes M);
+//   stop      after an E-stop or a limit (--events; CheckerOptions::stop_cycle) no pulse
+//             comes after the clock of its press, and the machine shows the error with
+//             the input's code from that clock, naming the block playing;
 //   sequence  blocks load in tape order, block_n_o showing each block's N;
-//   complete  the run reaches the end of program with every block played.
+//   complete  the run reaches the end of program with every block played (or, with a
+//             stop, ends on it).
 // Each rule reports its first failure per block with the block, the clock and the position.
 #pragma once
 #include <cstdint>
@@ -55,6 +59,7 @@ enum class Rule : uint8_t {
   kComplete,
   kHeld,
   kAcceleration,
+  kStop,
   kTotalError,  // set by the caller's tolerance check, not by observe()
 };
 const char* rule_name(Rule rule);
@@ -127,6 +132,10 @@ struct CheckerOptions {
   // after a hold's press in which pulses may still come.
   std::vector<std::pair<uint64_t, uint64_t>> holds;
   uint64_t hold_settle = 0;
+  // The first stop (E-stop, a limit switch) of the events: the clock of its press and the
+  // error code it raises (UINT64_MAX: none).
+  uint64_t stop_cycle = UINT64_MAX;
+  uint8_t stop_code = 0;
   // Bound of the pulse path around an arc block, measured against the radius changing
   // linearly from R0 to R1: arc_path_bound(R0, R1, arc_bound_blu) (path_bounds.h;
   // docs/circle-dda.md 3.2: 0.88 BLU, measured on every good arc up to W = 7 and 100000
@@ -177,6 +186,9 @@ class TrajectoryChecker {
   const ErrorStat& total_error() const { return total_; }
   GridPoint position() const { return pos_; }
   const std::vector<HoldStop>& hold_stops() const { return hold_stops_; }  // one per hold
+  // The run ended on its stop (CheckerOptions::stop_cycle) as the stop rule asks; the
+  // machine stood at position() from then on.
+  bool stopped() const { return stopped_; }
   uint64_t cycles() const { return last_cycle_; }
   uint64_t gap_clocks() const { return gap_clocks_; }
 
@@ -220,6 +232,7 @@ class TrajectoryChecker {
   bool expected_dir_[2] = {true, true};
   bool load_known_ = true;       // see start_block
   std::vector<HoldStop> hold_stops_;
+  bool stopped_ = false;
   LineSchedule schedule_;
   // A straight block's feed step S and its schedule (line_schedule.h) on this machine.
   unsigned __int128 step_of(const ProgrammedBlock& b) const;

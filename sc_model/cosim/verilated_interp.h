@@ -79,6 +79,9 @@ class VerilatedInterp {
     m.tape_end_i = in.tape_end;
     m.hold_i = in.hold;
     m.start_i = in.start;
+    m.estop_i = in.estop;
+    m.limit_x_i = in.limit_x;
+    m.limit_y_i = in.limit_y;
     clock(dump);
   }
   void tick(const InterpInputs& in) { tick(in, [](int) {}); }

@@ -1,6 +1,6 @@
 // Tape reader model: delivers a tape's frames to the interpolator over valid/ready at a
-// reader rate, one clock at a time, and with them the operator's presses of feed hold and
-// cycle start (operator_events.h) at their clocks. Plain C++ so the lock-step cosim and
+// reader rate, one clock at a time, and with them the operator's presses (feed hold, cycle
+// start, E-stop, limits: operator_events.h) at their clocks. Plain C++ so the lock-step cosim and
 // the SystemC tape-reader module use the very same timing.
 // Idea: a start/stop reader needs `cycles_per_frame` clocks to bring the next character
 // under the read head; the character stays valid until the decoder takes it (valid and
@@ -38,7 +38,7 @@ class FrameSource {
     in.frame = in.frame_valid ? frames_[next_] : 0;
     in.tape_end = next_ >= frames_.size();
     for (size_t k = next_event_; k < events_.size() && events_[k].cycle == clocks_ + 1; ++k)
-      (events_[k].kind == OperatorEvent::kHold ? in.hold : in.start) = true;
+      press(in, events_[k].kind);
     return in;
   }
 

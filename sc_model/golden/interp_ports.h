@@ -141,6 +141,11 @@ struct InterpInputs {
   // hold, until the clock after start (hold wins when both come together).
   bool hold = false;
   bool start = false;
+  // The stops (estop_i, limit_x_i, limit_y_i): one seen at an edge while the program runs
+  // stops the machine until reset, in the error state with its code.
+  bool estop = false;
+  bool limit_x = false;
+  bool limit_y = false;
 };
 
 // What each kind of output (interp_outputs.def) is in C++:

@@ -54,6 +54,7 @@ void GoldenInterp::reset() {
   rate_ = rate_target_ = 0;
   slack_ = 0;
   held_ = false;
+  stop_ = 0;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
   serial_ = SerialDda(cfg_.inc_width);
@@ -70,6 +71,8 @@ void GoldenInterp::reset() {
 uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   using State = GoldenTapeDecoder::State;
   if ((in.hold || (held_ && !in.start)) != held_) return 0;  // the hold register changes
+  if (stop_ == 0 && !out_.done && !out_.error && (in.estop || in.limit_x || in.limit_y))
+    return 0;                                                 // a stop latches
   if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
   const bool busy = out_.busy;
   const bool buffer_empty = !next_valid_;
@@ -77,7 +80,8 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   if (!busy && !buffer_empty) return 0;     // a load (or the RAM read before it)
   const State dstate = decoder_.state();
   if (!busy && buffer_empty &&
-      ((dstate == State::kError && !out_.error) || (dstate == State::kEnd && decoder_.tape_ended() && !out_.done)))
+      ((dstate == State::kError && !out_.error) ||
+       (dstate == State::kEnd && decoder_.tape_ended() && !out_.done && stop_ == 0)))
     return 0;                               // status_edge() raises error or done
   if (!decoder_.quiet(in, buffer_empty)) return 0;
   uint64_t n = std::numeric_limits<uint64_t>::max();
@@ -87,8 +91,8 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
     // A running serial iteration ignores strobes: its own pulse, words and end edges bound
     // the jump. Otherwise a saturated block strobes at every edge.
     const bool ramped = accel_step_ > 0;
-    // Held at rest, the feed generator does nothing.
-    const bool stopped = held_ && (!ramped || rate_ == 0);
+    // Held at rest, or stopped, the feed generator does nothing.
+    const bool stopped = stop_ != 0 || (held_ && (!ramped || rate_ == 0));
     if (player_running_)
       n = std::min(n, serial_.quiet_edges());
     else if (saturated_ && !ramped && !stopped)
@@ -114,7 +118,7 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
 
 void GoldenInterp::skip(uint64_t n) {
   cycle_ += n;
-  if (out_.busy && !player_done_ && !(held_ && (accel_step_ == 0 || rate_ == 0))) {
+  if (out_.busy && !player_done_ && stop_ == 0 && !(held_ && (accel_step_ == 0 || rate_ == 0))) {
     if (accel_step_ > 0) {  // a cruise: no strobe, u stays
       phase_ += n * rate_;
       slack_ -= static_cast<__int128>(n) * rate_;
@@ -184,9 +188,23 @@ void GoldenInterp::status_edge() {
     out_.error_code = static_cast<uint8_t>(decoder_.error_code());
     out_.error_block = decoder_.error_block();
     out_.error_offset = decoder_.error_offset();
-  } else if (decoder_.state() == State::kEnd && decoder_.tape_ended()) {
+  } else if (decoder_.state() == State::kEnd && decoder_.tape_ended() && stop_ == 0) {
+    // (an end raised at the edge where a stop latches is taken back by stop_edge())
     out_.done = true;
   }
+}
+
+// interp_top's stop_q: E-stop before the X limit before the Y limit. The report names the
+// block playing (or the last played) and no tape offset.
+void GoldenInterp::stop_edge(const InterpInputs& in) {
+  stop_ = in.estop ? 1 : in.limit_x ? 2 : 3;
+  out_.error = true;
+  out_.error_code = static_cast<uint8_t>(in.estop     ? TapeError::kEmergencyStop
+                                         : in.limit_x ? TapeError::kLimitX
+                                                      : TapeError::kLimitY);
+  out_.error_block = out_.block_n;
+  out_.error_offset = 0;
+  out_.done = false;  // only an end raised at this edge: a stop latches while not done
 }
 
 void GoldenInterp::inject(const Fault& fault) {

@@ -64,6 +64,7 @@ class GoldenInterp {
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
   void status_edge();                       // done / error when the player is empty
+  void stop_edge(const InterpInputs& in);   // a stop input latches
   void fault_edge();           // the injected fault acts at this cycle
   int64_t wrap_position(int64_t p) const {
     const uint64_t u = static_cast<uint64_t>(p) & pos_mask_;
@@ -111,6 +112,9 @@ class GoldenInterp {
   __int128 slack_ = 0;
   // Feed hold (hold_i until start_i): no strobe without ramps; with them, the target 0.
   bool held_ = false;
+  // The stop that stopped the machine (interp_top's stop_q): 0 none, 1 E-stop, 2 X limit,
+  // 3 Y limit. Stopped, no block loads and no iteration starts.
+  uint8_t stop_ = 0;
   bool dir_[2] = {false, false};
   // The player's DDA: CircleDda, or in the serial arch SerialDda. player_done_ and
   // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
@@ -142,17 +146,20 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   const bool finishing = busy && player_done_;
   const bool buffer_empty = !next_valid_;
   const State dstate = decoder_.state();
+  const bool running = !out_.done && !out_.error, stopped = stop_ != 0;
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
     status_edge();
-  const bool load = !buffer_empty && (!busy || finishing) && next_readable();
+  const bool load = !buffer_empty && (!busy || finishing) && next_readable() && !stopped;
 
   out_.step_x = false;
   out_.step_y = false;
   if (busy && !finishing) {
     // Feed generator (rtl/feed_generator.sv): one DDA iteration per strobe; with ramps the
-    // phase grows by the rate u, which ramp_edge() moves toward the block's S.
-    bool strobe;
-    if (accel_step_ == 0) {
+    // phase grows by the rate u, which ramp_edge() moves toward the block's S. Stopped, it
+    // does nothing, and only a serial iteration in flight ends.
+    bool strobe = false;
+    if (stopped) {
+    } else if (accel_step_ == 0) {
       strobe = saturated_ && !held_;
       if (!strobe && !held_) {
         const uint64_t p = phase_ + feed_step_;
@@ -174,6 +181,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
   held_ = in.hold || (held_ && !in.start);
+  if (running && !stopped && (in.estop || in.limit_x || in.limit_y)) stop_edge(in);
 }
 
 // The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the
@@ -202,13 +210,13 @@ inline void GoldenInterp::ramp_edge() {
 
 // CircleDda iterates at a strobe; SerialDda (docs/interpolator.md 5.6) starts an iteration
 // at a strobe and plays it over 2P clocks, reading the block's words from the buffer in its
-// first pass.
+// first pass (dda_serial.sv's mute_i: once stopped, its pulses are not emitted).
 inline void GoldenInterp::player_edge(bool strobe) {
   CircleDda::Steps s;
   if (cfg_.serial()) {
     const bool words = serial_.words();
     const SerialDda::Edge e = serial_.edge(strobe);
-    s = {e.x, e.y};
+    s = {e.x && stop_ == 0, e.y && stop_ == 0};  // stopped: the iteration in flight is mute
     player_running_ = serial_.running();
     player_done_ = serial_.done();
     if (words && !serial_.words()) words_end_cycle_ = cycle_;

@@ -29,9 +29,14 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
       e.kind = OperatorEvent::kHold;
     } else if (name == "resume" || name == "start") {
       e.kind = OperatorEvent::kStart;
-    } else if (name.rfind("override=", 0) == 0 || name.rfind("rapid-override=", 0) == 0 ||
-               name == "estop" || name == "limit-x" || name == "limit-y") {
-      throw bad("is not built yet: this interpolator has feed hold (hold) and cycle start (resume, start)");
+    } else if (name == "estop") {
+      e.kind = OperatorEvent::kEStop;
+    } else if (name == "limit-x") {
+      e.kind = OperatorEvent::kLimitX;
+    } else if (name == "limit-y") {
+      e.kind = OperatorEvent::kLimitY;
+    } else if (name.rfind("override=", 0) == 0 || name.rfind("rapid-override=", 0) == 0) {
+      throw bad("is not built yet: this interpolator has hold, resume, start, estop, limit-x and limit-y");
     } else {
       throw bad("is not an event (hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y)");
     }
@@ -41,6 +46,21 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
   std::stable_sort(events.begin(), events.end(),
                    [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
   return events;
+}
+
+const OperatorEvent* first_stop(const std::vector<OperatorEvent>& events) {
+  for (const OperatorEvent& e : events)
+    if (stop_error(e.kind) != TapeError::kNone) return &e;
+  return nullptr;
+}
+
+TapeError stop_error(OperatorEvent::Kind kind) {
+  switch (kind) {
+    case OperatorEvent::kEStop: return TapeError::kEmergencyStop;
+    case OperatorEvent::kLimitX: return TapeError::kLimitX;
+    case OperatorEvent::kLimitY: return TapeError::kLimitY;
+    default: return TapeError::kNone;
+  }
 }
 
 }  // namespace ncinterp

@@ -34,7 +34,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["engine"] = engine_name;
   j["arch"] = arch_name(r.config.arch);
   j["accel_mm_s2"] = r.accel_mm_s2;
-  j["status"] = r.ok() ? "ok" : "error";
+  j["status"] = r.ok() ? "ok" : r.stopped() ? "stopped" : "error";
   j["blocks"] = s.blocks_played;
   j["blocks_on_tape"] = r.blocks_on_tape;
   j["cycles"] = s.cycles;
@@ -67,11 +67,13 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["cycle_limit"] = r.max_cycles;
   j["wall_seconds"] = r.wall_seconds;
   // The software reader (sw/host/tape) and the engine's decoder apply the same rules: they must
-  // agree on whether and where the tape is bad.
-  const bool agree = reader_error ? s.error && reader_error->code == s.error_code &&
-                                        reader_error->block == s.error_block &&
-                                        reader_error->offset == s.error_offset
-                                  : !s.error;
+  // agree on whether and where the tape is bad. A stop ends the run before the engine may
+  // have read that far.
+  const bool agree = r.stopped() ? true
+                     : reader_error ? s.error && reader_error->code == s.error_code &&
+                                          reader_error->block == s.error_block &&
+                                          reader_error->offset == s.error_offset
+                                    : !s.error;
   j["reader_agrees"] = agree;
   if (const auto e = play_error(r, reader_error))
     j["error"] = {{"block", e->block}, {"offset", e->offset}, {"message", e->message}};

@@ -123,7 +123,7 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
       throw std::runtime_error(opt.vcd_path + ": the VCD window starts at cycle " +
                                std::to_string(r.vcd_window.from) + ", after the run ended at cycle " +
                                std::to_string(r.summary.cycles));
-    if (r.ok()) {
+    if (r.ok() || r.stopped()) {  // a run that fails on its tape writes none
       if (vcd) vcd->commit();
       r.vcd_written = true;
     }

@@ -58,6 +58,8 @@ struct PlayResult {
   double wall_seconds = 0;
   // The program played to its end (done), within the cycle limit.
   bool ok() const { return summary.done && !summary.error && !limit_reached; }
+  // An E-stop or a limit switch (--events) ended the run.
+  bool stopped() const { return summary.error && is_stop_error(summary.error_code); }
 };
 
 // A cycle limit no correct engine reaches on this tape: reading every frame, then every

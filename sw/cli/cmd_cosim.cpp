@@ -88,7 +88,8 @@ nlohmann::json report_json(const CosimArgs& a, const cosim::Options& o, const co
   j["cycles_per_frame"] = o.cycles_per_frame;
   j["cycle_limit"] = o.max_cycles;
   j["status"] = r.mismatch ? "mismatch" : (r.end == cosim::Result::End::kCycleLimit ? "cycle_limit" : "match");
-  j["end"] = end_name(r.end);
+  j["end"] = r.end == cosim::Result::End::kTapeError && is_stop_error(r.last.error_code) ? "stopped"
+                                                                                        : end_name(r.end);
   j["cycles"] = r.cycles;
   j["blocks"] = r.stats.blocks;
   j["saturated_blocks"] = r.stats.saturated_blocks;
@@ -174,6 +175,14 @@ int run(const CosimArgs& a) {
     std::cerr << a.tape << ": stopped at the cycle limit (" << o.max_cycles
               << " cycles) before done or error; the engines agreed so far (--max-cycles)\n";
     return 3;
+  }
+  if (r.end == cosim::Result::End::kTapeError && is_stop_error(r.last.error_code)) {
+    std::printf("%s: %s in block N%llu at cycle %llu, position X%lld Y%lld BLU; RTL and golden model "
+                "(%s) agree on every clock\n",
+                a.tape.c_str(), tape_error_message(static_cast<TapeError>(r.last.error_code)),
+                static_cast<unsigned long long>(r.last.error_block), static_cast<unsigned long long>(r.cycles),
+                static_cast<long long>(r.last.pos_x), static_cast<long long>(r.last.pos_y), arch_name(a.arch));
+    return kExitStopped;
   }
   if (r.end == cosim::Result::End::kTapeError) {
     std::cerr << a.tape << ": block N" << r.last.error_block << ", offset " << r.last.error_offset

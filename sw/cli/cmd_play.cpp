@@ -97,6 +97,17 @@ int run(const PlayArgs& a) {
               << " engine disagree about this tape"
               << (readback.error ? " (reader: " + tape::describe(*readback.error) + ")" : "") << "\n";
 
+  if (r.stopped()) {
+    std::printf("%s: %s in block N%llu at %.6g s, stopped at X%.3f Y%.3f mm\n", a.tape.c_str(),
+                tape_error_message(static_cast<TapeError>(r.summary.error_code)),
+                static_cast<unsigned long long>(r.summary.error_block),
+                report["simulated_seconds"].get<double>(),
+                static_cast<double>(r.summary.final_x) / std::pow(10.0, r.config.frac_digits),
+                static_cast<double>(r.summary.final_y) / std::pow(10.0, r.config.frac_digits));
+    if (r.vcd_written) std::printf("VCD: %s\n", a.vcd.c_str());
+    if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
+    return kExitStopped;
+  }
   if (const auto e = play_error(r, readback.error)) {
     std::cerr << a.tape << ": block N" << e->block << ", offset " << e->offset << ": "
               << e->message << "\n";

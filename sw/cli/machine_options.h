@@ -34,6 +34,10 @@ inline CLI::Option* add_accel_option(CLI::App* cmd, double& accel_mm_s2) {
       ->capture_default_str();
 }
 
+// The exit status of a play, check or cosim run that an E-stop or a limit of --events
+// ended (README, "Exit codes"): nothing failed, but the program did not run to its end.
+inline constexpr int kExitStopped = 5;
+
 // --events LIST into `events`: the operator's presses, e.g. hold@0.8s,resume@1.2s
 // (parse_events(), operator_events.h, reads it once the clock is known).
 inline CLI::Option* add_events_option(CLI::App* cmd, std::string& events) {

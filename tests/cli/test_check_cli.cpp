@@ -44,6 +44,26 @@ TEST_F(CheckCli, PassingTapeExitsZeroAndWritesTheReport) {
   EXPECT_TRUE(j["total_error"]["at"].contains("block"));
 }
 
+// A limit switch mid-part: every rule holds up to it, exit 5, status "stopped", and the
+// report names the stop, the block and where the machine stands.
+TEST_F(CheckCli, LimitSwitchStopsTheRunWithExitFiveAndTheStopInTheReport) {
+  const std::string tape = circle_tape();
+  const std::string report = path("r.json");
+  const int code = run("check " + tape + " --contour " + example_path("circle_r50.json") +
+                       " --reader-cps 100000 --accel 500 --events limit-x@0.5s --report " + report);
+  ASSERT_EQ(code, 5) << stdout_ << stderr_;
+  EXPECT_NE(stdout_.find("X limit switch at 0.5"), std::string::npos) << stdout_;
+  EXPECT_NE(stdout_.find("STOPPED"), std::string::npos) << stdout_;
+  const auto j = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(j["status"], "stopped");
+  EXPECT_EQ(j["violation_count"], 0);
+  EXPECT_EQ(j["stop"]["code"], 15);
+  EXPECT_EQ(j["stop"]["message"], "X limit switch");
+  EXPECT_GT(j["stop"]["block"].get<int>(), 0);
+  EXPECT_EQ(j["stop"]["position"], j["final_position"]);
+  EXPECT_FALSE(j["done"].get<bool>());
+}
+
 TEST_F(CheckCli, SvgShowsThePartTheWorstPointAndTheErrorAlongThePath) {
   const std::string tape = circle_tape();
   const std::string report = path("r.json"), svg = path("p.svg");

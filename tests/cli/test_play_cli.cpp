@@ -131,11 +131,33 @@ TEST_F(PlayCli, RampedAndHeldPlaysAgreeOnBothEnginesAndKeepThePath) {
   EXPECT_EQ(g["pulses"], p["pulses"]);
   EXPECT_EQ(g["final_position_blu"], p["final_position_blu"]);
 
-  EXPECT_EQ(play(kGear + " --events estop@1s --report " + path("e.json")), 1);
-  EXPECT_NE(stderr_.find("'estop@1s' is not built yet"), std::string::npos) << stderr_;
+  EXPECT_EQ(play(kGear + " --events override=50@1s --report " + path("e.json")), 1);
+  EXPECT_NE(stderr_.find("'override=50@1s' is not built yet"), std::string::npos) << stderr_;
   EXPECT_EQ(play(kGear + " --events hold@1 --report " + path("e.json")), 1);
   EXPECT_NE(stderr_.find("'hold@1' needs a time in seconds"), std::string::npos) << stderr_;
   EXPECT_EQ(files(), (std::vector<std::string>{"g.json", "p.json", "r.json"}));
+}
+
+// An E-stop mid-program: both engines stop at its clock with exit 5, status "stopped",
+// the error's code and block, the same pulses and position, short of the program's end;
+// the VCD of the stopped run is written.
+TEST_F(PlayCli, EStopEndsBothEnginesAtItsClockWithExitFive) {
+  ASSERT_EQ(play(kGear + " --report " + path("p.json")), 0) << stderr_;
+  const std::string stop = " --accel 500 --events estop@1.5s";
+  ASSERT_EQ(play(kGear + stop + " --engine golden --report " + path("g.json")), 5) << stderr_;
+  EXPECT_NE(stdout_.find("emergency stop in block N"), std::string::npos) << stdout_;
+  ASSERT_EQ(play(kGear + stop + " --engine rtl --vcd " + path("r.vcd") + " --report " + path("r.json")), 5)
+      << stderr_;
+  const nlohmann::json p = nlohmann::json::parse(slurp(path("p.json")));
+  const nlohmann::json g = nlohmann::json::parse(slurp(path("g.json")));
+  const nlohmann::json r = nlohmann::json::parse(slurp(path("r.json")));
+  EXPECT_EQ(g["status"], "stopped");
+  EXPECT_EQ(g["error"]["code"], 14);
+  EXPECT_EQ(g["error"]["message"], "emergency stop (error code 14)");
+  EXPECT_NEAR(g["simulated_seconds"].get<double>(), 1.5, 1e-5);
+  for (const char* key : {"cycles", "pulses", "final_position_blu", "status", "error"}) EXPECT_EQ(g[key], r[key]) << key;
+  EXPECT_NE(g["final_position_blu"], p["final_position_blu"]);
+  EXPECT_EQ(files(), (std::vector<std::string>{"g.json", "p.json", "r.json", "r.vcd"}));
 }
 
 TEST_F(PlayCli, BadTapeGivesOneLineAnErrorReportAndNoVcd) {

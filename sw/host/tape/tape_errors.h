@@ -27,4 +27,10 @@ constexpr unsigned kTapeErrorBits = [] {
 // The short message of a code ("parity error", ...); "unknown error code" for any other.
 const char* tape_error_message(TapeError code);
 
+// A code of the machine's own stops (E-stop, a limit switch), not of a tape fault.
+constexpr bool is_stop_error(unsigned code) {
+  return code == static_cast<unsigned>(TapeError::kEmergencyStop) ||
+         code == static_cast<unsigned>(TapeError::kLimitX) || code == static_cast<unsigned>(TapeError::kLimitY);
+}
+
 }  // namespace ncinterp

@@ -198,6 +198,51 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
   }
 }
 
+// E-stop and limits in check (--events): a run stopped mid-program passes every rule and
+// ends "stopped" at the press, its last pulse no later, on both archs and with the ramp; a
+// checker told of a stop the engine never got reports the pulses after it and the missing
+// stop (the stop rule), and only them.
+TEST(TrajectoryChecker, StopsEndTheRunAtTheirClockAndPulsesAfterOneFailTheStopRule) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    for (double accel : {0.0, 500.0}) {
+      std::mt19937 rng(17);
+      CheckSetup setup;
+      setup.clock_hz = 1e6;
+      setup.arch = arch;
+      setup.accel_mm_s2 = accel;
+      setup.reader_cps = 1e6;
+      const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+      const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+      setup.events = {{90001, OperatorEvent::kLimitY}};
+      const CheckOutcome stopped = run_check(frames_of(p), nullptr, setup);
+      const std::string what = std::string(arch_name(arch)) + (accel > 0 ? " ramped" : "");
+      ASSERT_TRUE(stopped.passed()) << what << ": " << first_violation(*stopped.checker);
+      EXPECT_TRUE(stopped.checker->stopped()) << what;
+      EXPECT_EQ(stopped.checker->cycles(), 90001u) << what;
+      EXPECT_EQ(stopped.run.last.error_code, static_cast<uint8_t>(TapeError::kLimitY));
+      ASSERT_FALSE(stopped.checker->pulses().empty());
+      EXPECT_LE(stopped.checker->pulses().back().cycle, 90001u);
+      // The engine without the stop, the checker with it.
+      InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, accel);
+      cfg.arch = arch;
+      CheckerOptions co = options_for(cfg);
+      co.operator_holds = true;
+      co.stop_cycle = 90001;
+      co.stop_code = static_cast<uint8_t>(TapeError::kLimitY);
+      const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
+      TrajectoryChecker c(lay_out(p), nullptr, co);
+      for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+      c.finish(trace.back());
+      EXPECT_FALSE(c.stopped());
+      ASSERT_GE(c.violation_count(), 2u) << what;
+      for (const Violation& v : c.violations()) {
+        EXPECT_EQ(v.rule, Rule::kStop) << what << ": " << v.detail;
+        EXPECT_GT(v.cycle, 90001u);
+      }
+    }
+  }
+}
+
 // The pulse path of a chord polygon inscribed in a circle: the checker's total error at
 // every pulse equals | |p - c| - R | computed here from the recorded pulse positions.
 // G00 plays as a line at the machine's rapid step, S = rapid_step whatever the block's

@@ -168,6 +168,53 @@ TEST_P(CosimArch, HoldsAndStartsStayInLockStepAndKeepThePulses) {
   }
 }
 
+// E-stop and the limits at random clocks, after random holds, with and without the ramp:
+// lock step on both archs; the run ends at the stop's clock in the error with the stop's
+// code, naming the block playing; its pulses are the first ones of the run without the
+// stop, in order, none after that clock, and the position counters add them up.
+TEST_P(CosimArch, StopsEndInLockStepAtTheirClockWithAPrefixOfThePulses) {
+  std::mt19937_64 rng(3303);
+  const OperatorEvent::Kind kinds[] = {OperatorEvent::kEStop, OperatorEvent::kLimitX, OperatorEvent::kLimitY};
+  int mid_block = 0;
+  for (int t = 0; t < 12; ++t) {
+    Options o = at_20khz(GetParam());
+    if (t % 2 == 0) o.config.accel_step = InterpConfig::accel_step_for(500, 20e3, 3, o.config.feed_modulus);
+    const std::vector<LineBlock> prog = test::random_line_program(rng, 12, o.config.feed_modulus);
+    const std::vector<uint8_t> frames = frames_of(test::line_tape_text(prog));
+    if (t % 3 == 0) o.events.push_back({std::uniform_int_distribution<uint64_t>(1, 2000)(rng), OperatorEvent::kHold});
+    if (t % 3 == 0) o.events.push_back({o.events.back().cycle + 500, OperatorEvent::kStart});
+    OutputRecorder plain_rec;
+    const Result plain = run(frames, o, plain_rec);
+    ASSERT_EQ(plain.end, Result::End::kDone);
+    const uint64_t at = std::uniform_int_distribution<uint64_t>(1, plain.cycles)(rng);
+    const OperatorEvent::Kind kind = kinds[t % 3];
+    o.events.push_back({at, kind});
+    std::sort(o.events.begin(), o.events.end(),
+              [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+    OutputRecorder rec;
+    const Result r = run(frames, o, rec);
+    ASSERT_FALSE(r.mismatch) << "tape " << t << ": " << cosim::describe(*r.mismatch);
+    ASSERT_EQ(r.end, Result::End::kTapeError) << "tape " << t;
+    EXPECT_EQ(r.cycles, at) << "tape " << t;
+    EXPECT_EQ(r.last.error_code, static_cast<uint8_t>(stop_error(kind))) << "tape " << t;
+    EXPECT_EQ(r.last.error_block, r.last.block_n) << "tape " << t;
+    EXPECT_EQ(r.last.error_offset, 0u) << "tape " << t;
+    mid_block += r.last.busy;
+    ASSERT_LE(rec.pulses.size(), plain_rec.pulses.size()) << "tape " << t;
+    int64_t x = 0, y = 0;
+    for (size_t i = 0; i < rec.pulses.size(); ++i) {
+      const auto& p = rec.pulses[i];
+      const auto& q = plain_rec.pulses[i];
+      ASSERT_TRUE(p.axis == q.axis && p.plus == q.plus && p.block == q.block) << "tape " << t << " pulse " << i;
+      EXPECT_LE(p.cycle, at) << "tape " << t;
+      (p.axis == 0 ? x : y) += p.plus ? 1 : -1;
+    }
+    EXPECT_EQ(r.last.pos_x, x) << "tape " << t;
+    EXPECT_EQ(r.last.pos_y, y) << "tape " << t;
+  }
+  EXPECT_GE(mid_block, 4);  // most stops land in a block, not between blocks
+}
+
 INSTANTIATE_TEST_SUITE_P(Archs, CosimArch, ::testing::Values(Arch::kSerial, Arch::kParallel),
                          [](const ::testing::TestParamInfo<Arch>& i) { return arch_name(i.param); });
 
