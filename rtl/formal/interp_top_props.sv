@@ -191,7 +191,6 @@ module interp_top_props #(
     if (!f_init) begin
       cp_playing: cover (busy && f_loaded_q != '0);
       cp_error_after_block: cover (error && f_loaded_q != '0);
-      cp_stop_moved: cover (f_stop_error && (pos_x != '0 || pos_y != '0));
     end
   end
   if (CoverMotion) begin : g_cover_motion
@@ -199,6 +198,7 @@ module interp_top_props #(
       if (!f_init) begin
         cp_moved_both: cover (pos_x != '0 && pos_y != '0);
         cp_done_after_motion: cover (done && pos_x != '0 && pos_y != '0);
+        cp_stop_moved: cover (f_stop_error && (pos_x != '0 || pos_y != '0));
       end
     end
   end
