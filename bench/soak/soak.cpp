@@ -10,6 +10,9 @@
 // other ones plays on an RTL variant verilated for its width, BLU and arch
 // (sw/tools/sweep/rtl_variant.h), built on demand and cached under --cache: no RTL run is
 // skipped. Those cases' tapes are collected and each variant plays its batch at the end.
+// --operator draws an operator per case (operator_events()): the ramp or none, feed holds
+// and starts, in one case of four an E-stop or a limit; the checker and the lock step on
+// the build's RTL play them (a variant's batch plays its tapes without them).
 // Usage (docs/verification.md):  build/bench/soak/ncinterp_soak --cases 500 --seed 1
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -19,6 +22,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
 #include <sstream>
 
 #include "atomic_file.h"
@@ -45,6 +49,7 @@ struct Args {
   std::string cache;
   bool no_arcs = false;
   bool lines_only = false;
+  bool operator_events = false;
 };
 
 // Per arch: runs, failures, clocks, wall time.
@@ -55,7 +60,7 @@ struct ArchTally {
 
 std::string tape_command(const regression::Case& c, const std::string& input) {
   const auto& o = c.first_stage;
-  char buf[512];
+  char buf[2048];
   std::snprintf(buf, sizeof buf,
                 "ncinterp tape %s -o %s.tape --tol %g --method %d --blu %g --width %u --arcs %s "
                 "--feed %.17g%s",
@@ -79,10 +84,14 @@ void dump_case(const std::string& dir, const regression::Case& c, const regressi
   write_file_atomically(base + ".tape", regression::make_tape(c));
   const char* arch = arch_name(c.check.arch);
   std::string notes = "# " + why + "\n" + tape_command(c, in.file_name) + "\n";
-  char buf[512];
-  std::snprintf(buf, sizeof buf, "ncinterp cosim %s.tape --arch %s --reader-cps %g  # W %u, BLU %g: the "
+  // The operator (--operator), as both commands read it.
+  std::string machine = " --clock-hz " + std::to_string(c.check.clock_hz);
+  if (c.check.accel_mm_s2 > 0) machine += " --accel " + std::to_string(c.check.accel_mm_s2);
+  if (!c.check.events.empty()) machine += " --events " + events_text(c.check.events, c.check.clock_hz);
+  char buf[2048];
+  std::snprintf(buf, sizeof buf, "ncinterp cosim %s.tape --arch %s --reader-cps %g%s  # W %u, BLU %g: the "
                 "RTL of `ncinterp` has W 16, BLU 0.001; others play on ncinterp_rtl_variant\n",
-                c.name.c_str(), arch, c.check.reader_cps, c.first_stage.width, c.first_stage.blu_mm);
+                c.name.c_str(), arch, c.check.reader_cps, machine.c_str(), c.first_stage.width, c.first_stage.blu_mm);
   notes += buf;
   if (out) {
     checker::ReportContext ctx;
@@ -95,10 +104,10 @@ void dump_case(const std::string& dir, const regression::Case& c, const regressi
     write_file_atomically(base + ".report.json", checker::check_report_json(*out, ctx).dump(1) + "\n");
     const checker::GridPoint s = out->reference ? out->reference->start() : checker::GridPoint{};
     std::snprintf(buf, sizeof buf,
-                  "ncinterp check %s.tape --contour %s --arch %s --tol %g --blu %g --width %u --reader-cps %g "
+                  "ncinterp check %s.tape --contour %s --arch %s --tol %g --blu %g --width %u --reader-cps %g%s "
                   "--start %.6f,%.6f%s --svg %s.svg --report %s.report.json\n",
                   c.name.c_str(), in.file_name.c_str(), arch, c.first_stage.tol_mm, c.first_stage.blu_mm,
-                  c.first_stage.width, c.check.reader_cps, s.x * out->blu_mm, s.y * out->blu_mm,
+                  c.first_stage.width, c.check.reader_cps, machine.c_str(), s.x * out->blu_mm, s.y * out->blu_mm,
                   c.first_stage.cutter_radius_mm > 0
                       ? (" --cutter-radius " + std::to_string(c.first_stage.cutter_radius_mm) +
                          " --side " + (c.first_stage.side_left ? "left" : "right"))
@@ -112,13 +121,36 @@ void dump_case(const std::string& dir, const regression::Case& c, const regressi
   write_file_atomically(base + ".txt", notes);
 }
 
-// The configuration the RTL of a case plays with (its tape's format, its arch).
+// The configuration the RTL of a case plays with (its tape's format, its arch, its ramp).
 InterpConfig case_config(const regression::Case& c) {
   checker::CheckSetup s = c.check;
   checker::match_first_stage(s, c.first_stage, {});
-  InterpConfig cfg = interp_config(s.clock_hz, s.format);
+  InterpConfig cfg = interp_config(s.clock_hz, s.format, s.rapid_mm_min, s.accel_mm_s2);
   cfg.arch = c.check.arch;
   return cfg;
+}
+
+// A random operator for a case of about `seconds` of machine time (--operator): the ramp at
+// 500 mm/s^2 in half the cases, up to three feed holds each with its start a little later,
+// and in one case of four an E-stop or a limit somewhere in the run (or after it).
+void operator_events(checker::CheckSetup& s, uint64_t seed, double seconds) {
+  std::mt19937_64 rng(seed * 7919 + 17);
+  const auto clock = [&](double from_s, double to_s) {
+    return static_cast<uint64_t>(std::uniform_real_distribution<double>(from_s, to_s)(rng) * s.clock_hz) + 1;
+  };
+  s.accel_mm_s2 = rng() % 2 ? 500.0 : 0.0;
+  s.events.clear();
+  for (int k = static_cast<int>(rng() % 4); k > 0; --k) {
+    const uint64_t hold = clock(0, 1.2 * seconds);
+    s.events.push_back({hold, OperatorEvent::kHold});
+    s.events.push_back({hold + clock(0.001, 0.1), OperatorEvent::kStart});
+  }
+  if (rng() % 4 == 0) {
+    const OperatorEvent::Kind stops[] = {OperatorEvent::kEStop, OperatorEvent::kLimitX, OperatorEvent::kLimitY};
+    s.events.push_back({clock(0, 1.5 * seconds), stops[rng() % 3]});
+  }
+  std::stable_sort(s.events.begin(), s.events.end(),
+                   [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
 }
 
 // A case waiting for its RTL variant's batch.
@@ -152,6 +184,9 @@ int main(int argc, char** argv) {
   app.add_flag("--lines-only", a.lines_only,
                "the interpolator without circle mode (CircleMode = 0, the iCEstick's core): chords only, "
                "the golden model and the RTL built so");
+  app.add_flag("--operator", a.operator_events,
+               "draw an operator per case: the ramp at 500 mm/s^2 or none, feed holds and starts, in one "
+               "case of four an E-stop or a limit (a variant's RTL batch plays without them)");
   CLI11_PARSE(app, argc, argv);
 
   const bool golden = a.engine != "rtl", rtl = a.engine != "golden";
@@ -189,6 +224,7 @@ int main(int argc, char** argv) {
       continue;
     }
     c.check.format.circle_mode = !a.lines_only;
+    if (a.operator_events) operator_events(c.check, seed, a.seconds);
     for (Arch arch : archs) {
       c.check.arch = arch;
       ArchTally& t = tally[arch];
@@ -205,11 +241,15 @@ int main(int argc, char** argv) {
           const double ratio = out.checker->total_error().max * out.blu_mm / c.first_stage.tol_mm;
           if (ratio > worst_ratio) worst_ratio = ratio, worst_case = c.name;
           std::printf("%s %s golden m%d tol %g R %g W %u BLU %g: total %.4f mm (%.0f%% of tol), path %.3f BLU, "
-                      "%llu clocks: %s\n",
+                      "%llu clocks%s: %s\n",
                       c.name.c_str(), name, c.first_stage.method, c.first_stage.tol_mm,
                       c.first_stage.cutter_radius_mm, c.first_stage.width, c.first_stage.blu_mm,
                       out.checker->total_error().max * out.blu_mm, 100 * ratio, out.checker->path_error().max,
-                      static_cast<unsigned long long>(golden_clocks), out.passed() ? "ok" : "FAIL");
+                      static_cast<unsigned long long>(golden_clocks),
+                      c.check.events.empty() && c.check.accel_mm_s2 == 0 ? ""
+                      : out.checker->stopped()                          ? " (operator; stopped)"
+                                                                        : " (operator)",
+                      out.passed() ? "ok" : "FAIL");
           if (!out.passed()) {
             std::printf("%s", regression::describe(c, out).c_str());
             fail(c, input, &out, "check failed on the golden model");
@@ -225,14 +265,17 @@ int main(int argc, char** argv) {
           try {
             cosim::Options o;
             o.config = cfg;
+            o.events = c.check.events;
             o.cycles_per_frame = FrameSource::cycles_per_frame_for(c.check.clock_hz, c.check.reader_cps);
             if (golden_clocks) o.max_cycles = 2 * golden_clocks + 1'000'000;
             const cosim::Result r = cosim::run_lockstep(regression::make_tape(c), o);
             ++t.rtl_runs;
             t.clocks += r.cycles;
-            if (r.end == cosim::Result::End::kDone) {
-              std::printf("%s %s rtl: lock step ok, %llu clocks\n", c.name.c_str(), name,
-                          static_cast<unsigned long long>(r.cycles));
+            const bool stopped = r.end == cosim::Result::End::kTapeError && is_stop_error(r.last.error_code) &&
+                                 first_stop(o.events);
+            if (r.end == cosim::Result::End::kDone || stopped) {
+              std::printf("%s %s rtl: lock step ok, %llu clocks%s\n", c.name.c_str(), name,
+                          static_cast<unsigned long long>(r.cycles), stopped ? ", stopped" : "");
             } else {
               const std::string why = r.mismatch ? "RTL differs at " + cosim::describe(*r.mismatch)
                                                  : std::string("the lock step did not reach done");

@@ -155,10 +155,11 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   out_.step_y = false;
   if (busy && !finishing) {
     // Feed generator (rtl/feed_generator.sv): one DDA iteration per strobe; with ramps the
-    // phase grows by the rate u, which ramp_edge() moves toward the block's S. Stopped, it
-    // does nothing, and only a serial iteration in flight ends.
+    // phase grows by the rate u, which ramp_edge() moves toward the block's S.
     bool strobe = false;
     if (stopped) {
+      // A stop input has stopped the machine: no strobe; a serial iteration in flight ends
+      // without its pulses (player_edge()).
     } else if (accel_step_ == 0) {
       strobe = saturated_ && !held_;
       if (!strobe && !held_) {

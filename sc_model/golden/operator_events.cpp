@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -46,6 +47,17 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
   std::stable_sort(events.begin(), events.end(),
                    [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
   return events;
+}
+
+std::string events_text(const std::vector<OperatorEvent>& events, double clock_hz) {
+  static const char* const kNames[] = {"hold", "start", "estop", "limit-x", "limit-y"};
+  std::string text;
+  for (const OperatorEvent& e : events) {
+    char at[64];
+    std::snprintf(at, sizeof at, "@%.17gs", static_cast<double>(e.cycle - 1) / clock_hz);
+    text += (text.empty() ? "" : ",") + std::string(kNames[e.kind]) + at;
+  }
+  return text;
 }
 
 const OperatorEvent* first_stop(const std::vector<OperatorEvent>& events) {

@@ -26,6 +26,10 @@ struct OperatorEvent {
 // and the names. Throws std::invalid_argument.
 std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz);
 
+// The list as --events reads it ("hold@0.5s,start@0.6s"): parse_events() gives `events`
+// back at clock_hz.
+std::string events_text(const std::vector<OperatorEvent>& events, double clock_hz);
+
 // The press of `kind` in the inputs of its clock.
 inline void press(InterpInputs& in, OperatorEvent::Kind kind) {
   switch (kind) {
