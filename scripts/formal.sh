@@ -289,7 +289,12 @@ elif ((jobs > 1)); then
   } | parallel -k -j "$jobs" --colsep ' ' "$0 ${args[*]} {1} {2} | sed -n '3p'" >"$work/rows.txt" || true
   while IFS= read -r row; do
     rows+=("$row")
-    if [[ "$row" == *" PASS "* || "$row" == *" caught: "* ]]; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+    # A mutant's row reads "NOT CAUGHT: PASS ..." when its proof passed: a failure.
+    if [[ "$row" != *"NOT CAUGHT"* && ("$row" == *" PASS "* || "$row" == *" caught: "*) ]]; then
+      passed=$((passed + 1))
+    else
+      failed=$((failed + 1))
+    fi
   done <"$work/rows.txt"
 else
   for n in "${proof_names[@]}"; do check_proof "$n"; done

@@ -185,8 +185,8 @@ module interp_top_props #(
   end
 
   // Reachability: a block plays; a tape error is reported after a block has played; and
-  // (CoverMotion) a block moves both axes and a program whose block moved both axes is
-  // played to done.
+  // (CoverMotion) a block moves both axes, a program whose block moved both axes is played
+  // to done, and a stop comes after motion.
   always_comb begin
     if (!f_init) begin
       cp_playing: cover (busy && f_loaded_q != '0);
