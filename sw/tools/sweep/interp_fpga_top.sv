@@ -40,7 +40,7 @@ module interp_fpga_top #(
   output logic       busy_o,
   output logic       done_o,
   output logic       error_o,
-  output logic [3:0] error_code_o,
+  output logic [interp_pkg::ErrCodeWidth-1:0] error_code_o,
   output logic       feed_saturated_o,
   input  logic [4:0] rd_sel_i,      // which byte of the status word
   output logic [7:0] rd_data_o
@@ -68,6 +68,7 @@ module interp_fpga_top #(
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(modulus_q), .rapid_step_i(rapid_q), .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
+    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .pos_x_o(pos_x), .pos_y_o(pos_y),
