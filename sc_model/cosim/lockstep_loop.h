@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dda_serial.h"
 #include "frame_source.h"
 #include "lockstep.h"
 
@@ -23,6 +24,10 @@ Result run_lockstep_on(Rtl& rtl, const std::vector<uint8_t>& frames, const Optio
   Result result;
   Stats& stats = result.stats;
   uint64_t cycle = 0, idle_run = 0, loads = 0;
+  // A stop (E-stop, a limit) ends the run once no iteration can still be in flight: the
+  // engines are compared for two serial iterations more, so a pulse after the stop shows.
+  uint64_t stop_cycle = 0;
+  const uint64_t stop_settle = 2 * SerialDda::iteration_clocks(options.config.inc_width);
   auto compare = [&]() {
     if (rtl.same_as(golden.outputs())) return true;
     Mismatch m = first_difference(golden.outputs(), rtl.outputs());
@@ -37,7 +42,8 @@ Result run_lockstep_on(Rtl& rtl, const std::vector<uint8_t>& frames, const Optio
   if (compare()) {
     for (;;) {
       const InterpOutputs& g = golden.outputs();
-      if (g.done || g.error) {
+      if (g.error && is_stop_error(g.error_code) && stop_cycle == 0) stop_cycle = cycle;
+      if (g.done || (g.error && (stop_cycle == 0 || cycle >= stop_cycle + stop_settle))) {
         result.end = g.done ? Result::End::kDone : Result::End::kTapeError;
         break;
       }
@@ -67,7 +73,7 @@ Result run_lockstep_on(Rtl& rtl, const std::vector<uint8_t>& frames, const Optio
     }
   }
   stats.blocks = loads;
-  result.cycles = cycle;
+  result.cycles = stop_cycle ? stop_cycle : cycle;  // a stopped run's: the stop's clock
   result.last = golden.outputs();
   return result;
 }
