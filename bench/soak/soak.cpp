@@ -149,8 +149,7 @@ void operator_events(checker::CheckSetup& s, uint64_t seed, double seconds) {
     const OperatorEvent::Kind stops[] = {OperatorEvent::kEStop, OperatorEvent::kLimitX, OperatorEvent::kLimitY};
     s.events.push_back({clock(0, 1.5 * seconds), stops[rng() % 3]});
   }
-  std::stable_sort(s.events.begin(), s.events.end(),
-                   [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+  sort_by_clock(s.events);
 }
 
 // A case waiting for its RTL variant's batch.

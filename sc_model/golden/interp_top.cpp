@@ -71,8 +71,7 @@ void GoldenInterp::reset() {
 uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   using State = GoldenTapeDecoder::State;
   if ((in.hold || (held_ && !in.start)) != held_) return 0;  // the hold register changes
-  if (stop_ == 0 && !out_.done && !out_.error && (in.estop || in.limit_x || in.limit_y))
-    return 0;                                                 // a stop latches
+  if ((in.estop || in.limit_x || in.limit_y) && !out_.done && !out_.error) return 0;  // a stop latches
   if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
   const bool busy = out_.busy;
   const bool buffer_empty = !next_valid_;

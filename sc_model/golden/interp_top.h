@@ -146,7 +146,9 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   const bool finishing = busy && player_done_;
   const bool buffer_empty = !next_valid_;
   const State dstate = decoder_.state();
-  const bool running = !out_.done && !out_.error, stopped = stop_ != 0;
+  // A stop input latches while the program runs (a stop has raised error already).
+  const bool stop_now = (in.estop || in.limit_x || in.limit_y) && !out_.done && !out_.error;
+  const bool stopped = stop_ != 0;
   if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
     status_edge();
   const bool load = !buffer_empty && (!busy || finishing) && next_readable() && !stopped;
@@ -182,7 +184,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
   held_ = in.hold || (held_ && !in.start);
-  if (running && !stopped && (in.estop || in.limit_x || in.limit_y)) stop_edge(in);
+  if (stop_now) stop_edge(in);
 }
 
 // The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the

@@ -5,9 +5,25 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <stdexcept>
 
 namespace ncinterp {
+
+namespace {
+
+// The names of --events and their presses; "resume" is cycle start's other name (events_text()
+// writes the first name of a kind).
+struct EventName {
+  const char* name;
+  OperatorEvent::Kind kind;
+};
+constexpr EventName kEventNames[] = {
+    {"hold", OperatorEvent::kHold},    {"start", OperatorEvent::kStart},    {"resume", OperatorEvent::kStart},
+    {"estop", OperatorEvent::kEStop},  {"limit-x", OperatorEvent::kLimitX}, {"limit-y", OperatorEvent::kLimitY},
+};
+
+}  // namespace
 
 std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz) {
   std::vector<OperatorEvent> events;
@@ -25,37 +41,33 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
     const double t = std::strtod(when.c_str(), &stop);
     if (when.empty() || stop == when.c_str() || std::string(stop) != "s" || !(t >= 0) || !(t <= 1e6))
       throw bad("needs a time in seconds from 0 to 10^6, e.g. @1.5s");
-    OperatorEvent e{static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, OperatorEvent::kHold};
-    if (name == "hold") {
-      e.kind = OperatorEvent::kHold;
-    } else if (name == "resume" || name == "start") {
-      e.kind = OperatorEvent::kStart;
-    } else if (name == "estop") {
-      e.kind = OperatorEvent::kEStop;
-    } else if (name == "limit-x") {
-      e.kind = OperatorEvent::kLimitX;
-    } else if (name == "limit-y") {
-      e.kind = OperatorEvent::kLimitY;
-    } else if (name.rfind("override=", 0) == 0 || name.rfind("rapid-override=", 0) == 0) {
-      throw bad("is not built yet: this interpolator has hold, resume, start, estop, limit-x and limit-y");
-    } else {
+    const auto known = std::find_if(std::begin(kEventNames), std::end(kEventNames),
+                                    [&](const EventName& n) { return name == n.name; });
+    if (known == std::end(kEventNames)) {
+      if (name.rfind("override=", 0) == 0 || name.rfind("rapid-override=", 0) == 0)
+        throw bad("is not built yet: this interpolator has hold, resume, start, estop, limit-x and limit-y");
       throw bad("is not an event (hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y)");
     }
-    events.push_back(e);
+    events.push_back({static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, known->kind});
     pos = end + 1;
   }
-  std::stable_sort(events.begin(), events.end(),
-                   [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+  sort_by_clock(events);
   return events;
 }
 
+void sort_by_clock(std::vector<OperatorEvent>& events) {
+  std::stable_sort(events.begin(), events.end(),
+                   [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+}
+
 std::string events_text(const std::vector<OperatorEvent>& events, double clock_hz) {
-  static const char* const kNames[] = {"hold", "start", "estop", "limit-x", "limit-y"};
   std::string text;
   for (const OperatorEvent& e : events) {
+    const auto named = std::find_if(std::begin(kEventNames), std::end(kEventNames),
+                                    [&](const EventName& n) { return n.kind == e.kind; });
     char at[64];
     std::snprintf(at, sizeof at, "@%.17gs", static_cast<double>(e.cycle - 1) / clock_hz);
-    text += (text.empty() ? "" : ",") + std::string(kNames[e.kind]) + at;
+    text += (text.empty() ? "" : ",") + std::string(named->name) + at;
   }
   return text;
 }

@@ -26,6 +26,9 @@ struct OperatorEvent {
 // and the names. Throws std::invalid_argument.
 std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz);
 
+// Orders events by clock, presses of one clock in their given order (parse_events() does).
+void sort_by_clock(std::vector<OperatorEvent>& events);
+
 // The list as --events reads it ("hold@0.5s,start@0.6s"): parse_events() gives `events`
 // back at clock_hz.
 std::string events_text(const std::vector<OperatorEvent>& events, double clock_hz);

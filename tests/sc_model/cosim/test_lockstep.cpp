@@ -189,8 +189,7 @@ TEST_P(CosimArch, StopsEndInLockStepAtTheirClockWithAPrefixOfThePulses) {
     const uint64_t at = std::uniform_int_distribution<uint64_t>(1, plain.cycles)(rng);
     const OperatorEvent::Kind kind = kinds[t % 3];
     o.events.push_back({at, kind});
-    std::sort(o.events.begin(), o.events.end(),
-              [](const OperatorEvent& a, const OperatorEvent& b) { return a.cycle < b.cycle; });
+    sort_by_clock(o.events);
     OutputRecorder rec;
     const Result r = run(frames, o, rec);
     ASSERT_FALSE(r.mismatch) << "tape " << t << ": " << cosim::describe(*r.mismatch);
