@@ -65,6 +65,16 @@ package interp_pkg;
             || code == 7'd30;
   endfunction
 
+  // The feed and rapid overrides (feed_override_i, rapid_override_i): a fraction of
+  // the block's rate in units of 2^-OverrideFracBits (feed_override.h); OverrideOne is
+  // 100 %, what a machine without an operator's override ties the inputs to. Only
+  // the feed generator and the tops read them.
+  /* verilator lint_off UNUSEDPARAM */
+  localparam int OverrideWidth = 9;
+  localparam int OverrideFracBits = 7;
+  localparam logic [OverrideWidth-1:0] OverrideOne = 9'd128;
+  /* verilator lint_on UNUSEDPARAM */
+
   // Error codes: error_code_o (0 while error_o is low).
   localparam int ErrCodeWidth = 5;
   typedef enum logic [ErrCodeWidth-1:0] {

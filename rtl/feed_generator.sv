@@ -32,6 +32,10 @@
 // creep. Every strobe still starts the same DDA iteration, so the pulses are those
 // without ramps; only time stretches. With du = 0 (or Accel = 0) it is the generator
 // above, clock for clock.
+// Overrides (with the ramp only): the target is min(min(S, cap) P >> OverrideFracBits, cap),
+// P the feed override, or for a rapid traverse (rapid_i at its load) the rapid override,
+// registered. So an override scales the rate the block would play at, and u follows a
+// change of it at du per clock like any other; P = 0 stops the block as a hold does.
 // Golden twin: the section "Feed generator" of GoldenInterp::tick() and
 // GoldenInterp::ramp_edge() (sc_model/golden/interp_top.h).
 module feed_generator #(
@@ -52,6 +56,11 @@ module feed_generator #(
   // a plain block strobes no more at once; a ramped one brakes at du per clock to rest.
   input  logic                    hold_i,
   input  logic                    start_i,
+  // The overrides (read with the ramp only): P for feed blocks, and for rapid traverses,
+  // in units of 2^-OverrideFracBits; rapid_i: the block loading at this edge is a G00.
+  input  logic [interp_pkg::OverrideWidth-1:0] feed_override_i,
+  input  logic [interp_pkg::OverrideWidth-1:0] rapid_override_i,
+  input  logic                    rapid_i,
   // S of the playing block (after its load edge); only its low ModulusWidth - LeadBits
   // bits are read: a block with any higher bit set is saturated.
   /* verilator lint_off UNUSEDSIGNAL */
@@ -98,7 +107,17 @@ module feed_generator #(
   localparam int RateWidth  = ModulusWidth - CapBits;
   logic [ModulusWidth-1:0] accel_q;
   logic [RateWidth-1:0]    cap_q, rate_q, rate_d, du, target;
-  logic                    capped_q, capped_d, ramp_on, held_q;
+  logic                    capped_q, capped_d, ramp_on, held_q, halt;
+  // rapid_q: the block plays at the rapid override. override_q: its P, registered.
+  // scaled: min(S, cap) P; its top bits above cap saturate the target at cap.
+  localparam int OvrWidth = interp_pkg::OverrideWidth;
+  logic                    rapid_q;
+  logic [OvrWidth-1:0]     override_q;
+  logic [RateWidth-1:0]    base;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [RateWidth+OvrWidth-1:0] scaled;  // its fraction bits are dropped
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [RateWidth+OvrWidth-interp_pkg::OverrideFracBits-1:0] overridden;
   logic [IterWidth-1:0]    slack_it_q, slack_it_d;
   logic [ModulusWidth-1:0] slack_frac_q, slack_frac_d;
   logic [RateWidth:0]      up_rate;                       // u + du
@@ -132,7 +151,13 @@ module feed_generator #(
   // K > u exactly when D exceeds the wraps of f + u (K - u = (D - wraps) M - the rest, the
   // rest < M), and K > 2u + du when D exceeds those of f + 2u + du.
   always_comb begin
-    target   = held_q ? '0 : capped_q ? cap_q : RateWidth'(run_step_i);
+    // Held or overridden to 0, the target is 0 and u does not start from rest or creep.
+    halt       = held_q || override_q == '0;
+    base       = capped_q ? cap_q : RateWidth'(run_step_i);
+    scaled     = (RateWidth + OvrWidth)'(base) * (RateWidth + OvrWidth)'(override_q);
+    overridden = scaled[RateWidth+OvrWidth-1:interp_pkg::OverrideFracBits];
+    target     = halt ? '0 : overridden > ($bits(overridden))'(cap_q) ? cap_q
+                                                                     : RateWidth'(overridden);
     up_rate  = {1'b0, rate_q} + {1'b0, du};
     stay_sum = (ModulusWidth + 1)'(slack_frac_q) + (ModulusWidth + 1)'(rate_q);
     {stay_borrow, stay_over} = {1'b0, stay_sum} - {2'b0, modulus_q};
@@ -183,14 +208,14 @@ module feed_generator #(
       // The ramp's move for the next clock: up, stay (or creep at du), or down.
       if (ramp_on) begin
         // From rest (not held) whenever K > 0; otherwise while a stop from u + du fits.
-        if (rate_q == '0 && !held_q ? slack_it_q != '0
+        if (rate_q == '0 && !halt ? slack_it_q != '0
                                     : up_rate <= {1'b0, target} &&
                                       slack_it_q > IterWidth'(up_wraps)) begin
           rate_d       = up_rate[RateWidth-1:0];
           slack_it_d   = slack_it_q - IterWidth'(up_wraps);
           slack_frac_d = up_frac;
         end else if ((rate_q <= target && slack_it_q > IterWidth'(stay_wrap)) ||
-                     (rate_q == du && !held_q && slack_it_q != '0)) begin
+                     (rate_q == du && !halt && slack_it_q != '0)) begin
           slack_it_d   = slack_it_q - IterWidth'(stay_wrap);
           slack_frac_d = stay_frac;
         end else if (rate_q != '0) begin
@@ -206,6 +231,8 @@ module feed_generator #(
     cap_q     <= RateWidth'((modulus_i - 1'b1) >> CapBits);
     if (!rst_ni) begin
       held_q       <= 1'b0;
+      rapid_q      <= 1'b0;
+      override_q   <= Accel ? OvrWidth'(1) << interp_pkg::OverrideFracBits : '0;
       phase_q      <= '0;
       saturated_q  <= 1'b0;
       rate_q       <= '0;
@@ -214,6 +241,9 @@ module feed_generator #(
       slack_frac_q <= '0;
     end else begin
       held_q       <= hold_i || (held_q && !start_i);
+      rapid_q      <= load_i ? rapid_i : rapid_q;
+      override_q   <= !Accel ? '0 : (load_i ? rapid_i : rapid_q) ? rapid_override_i
+                                                                 : feed_override_i;
       phase_q      <= phase_d;
       saturated_q  <= saturated_d;
       rate_q       <= rate_d;

@@ -59,6 +59,10 @@ module interp_top #(
   // The operator: feed hold and cycle start (feed_generator.sv).
   input  logic                    hold_i,
   input  logic                    start_i,
+  // The operator's feed override (G01, G02, G03) and rapid override (G00), with the ramp:
+  // the fraction of a block's rate it plays at, 2^OverrideFracBits = 100 % (feed_generator.sv).
+  input  logic [interp_pkg::OverrideWidth-1:0] feed_override_i,
+  input  logic [interp_pkg::OverrideWidth-1:0] rapid_override_i,
   // The machine's stops: E-stop and the X and Y limit switches (high: tripped). The first
   // seen at an edge while the program runs stops the machine for good (until reset): the
   // error state with its own code from that edge, and from the next edge on no block
@@ -179,6 +183,8 @@ module interp_top #(
     .clk_i, .rst_ni,
     .load_i(load), .step_i(next_block.step), .step_over_i(next_block.step_over),
     .iterations_i((IncWidth + 1)'(next_block.iterations)), .accel_step_i, .hold_i, .start_i,
+    .feed_override_i, .rapid_override_i,
+    .rapid_i(next_block.motion == interp_pkg::MotionRapid),
     .run_step_i(play_step),
     .run_i(busy_q && !finished && !stopped), .modulus_i(feed_modulus_i),
     .strobe_o(strobe), .saturated_o(saturated)

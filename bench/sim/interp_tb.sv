@@ -34,6 +34,7 @@ module interp_tb #(
 
   interp_top #(.BitSerial(BitSerial)) dut (
     .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]), .rapid_step_i(rapid[47:0]), .accel_step_i(48'd0), .hold_i(1'b0), .start_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
     .frame_i(frame), .frame_valid_i(frame_valid), .tape_end_i(tape_end),
     .frame_ready_o(frame_ready),

@@ -11,8 +11,9 @@
 // (sw/tools/sweep/rtl_variant.h), built on demand and cached under --cache: no RTL run is
 // skipped. Those cases' tapes are collected and each variant plays its batch at the end.
 // --operator draws an operator per case (operator_events()): the ramp or none, feed holds
-// and starts, in one case of four an E-stop or a limit; the checker and the lock step on
-// the build's RTL play them (a variant's batch plays its tapes without them).
+// and starts, overrides with the ramp, in one case of four an E-stop or a limit; the checker
+// and the lock step on the build's RTL play them (a variant's batch plays its tapes without
+// them).
 // Usage (docs/verification.md):  build/bench/soak/ncinterp_soak --cases 500 --seed 1
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -132,7 +133,8 @@ InterpConfig case_config(const regression::Case& c) {
 
 // A random operator for a case of about `seconds` of machine time (--operator): the ramp at
 // 500 mm/s^2 in half the cases, up to three feed holds each with its start a little later,
-// and in one case of four an E-stop or a limit somewhere in the run (or after it).
+// with the ramp up to three feed overrides (25 % to 200 %) and a rapid override, and in one
+// case of four an E-stop or a limit somewhere in the run (or after it).
 void operator_events(checker::CheckSetup& s, uint64_t seed, double seconds) {
   std::mt19937_64 rng(seed * 7919 + 17);
   const auto clock = [&](double from_s, double to_s) {
@@ -144,6 +146,13 @@ void operator_events(checker::CheckSetup& s, uint64_t seed, double seconds) {
     const uint64_t hold = clock(0, 1.2 * seconds);
     s.events.push_back({hold, OperatorEvent::kHold});
     s.events.push_back({hold + clock(0.001, 0.1), OperatorEvent::kStart});
+  }
+  if (s.accel_mm_s2 > 0) {
+    for (int k = static_cast<int>(rng() % 4); k > 0; --k)
+      s.events.push_back({clock(0, seconds), OperatorEvent::kFeedOverride,
+                          static_cast<uint16_t>(kOverrideOne / 4 + rng() % (7 * kOverrideOne / 4 + 1))});
+    const uint16_t rapid[] = {kOverrideOne / 4, kOverrideOne / 2, kOverrideOne};
+    if (rng() % 2) s.events.push_back({clock(0, seconds), OperatorEvent::kRapidOverride, rapid[rng() % 3]});
   }
   if (rng() % 4 == 0) {
     const OperatorEvent::Kind stops[] = {OperatorEvent::kEStop, OperatorEvent::kLimitX, OperatorEvent::kLimitY};
@@ -184,8 +193,9 @@ int main(int argc, char** argv) {
                "the interpolator without circle mode (CircleMode = 0, the iCEstick's core): chords only, "
                "the golden model and the RTL built so");
   app.add_flag("--operator", a.operator_events,
-               "draw an operator per case: the ramp at 500 mm/s^2 or none, feed holds and starts, in one "
-               "case of four an E-stop or a limit (a variant's RTL batch plays without them)");
+               "draw an operator per case: the ramp at 500 mm/s^2 or none, feed holds and starts, overrides "
+               "with the ramp, in one case of four an E-stop or a limit (a variant's RTL batch plays "
+               "without them)");
   CLI11_PARSE(app, argc, argv);
 
   const bool golden = a.engine != "rtl", rtl = a.engine != "golden";

@@ -150,6 +150,7 @@ module board_core #(
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
     .frame_ready_o(frame_ready),

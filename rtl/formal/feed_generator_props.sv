@@ -43,7 +43,8 @@ module feed_generator_props #(
   // run_step_i is the block buffer's out_play_o in interp_top: the loaded block's S.
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(MW), .LeadBits(LB)) u_dut (
     .clk_i, .rst_ni, .load_i, .step_i(StepWidth'(step)), .step_over_i(1'b0),
-    .iterations_i(17'(count_i)), .accel_step_i(MW'(0)), .hold_i(1'b0), .start_i(1'b0),
+    .iterations_i(17'(count_i)), .accel_step_i(MW'(0)), .hold_i(1'b0), .start_i(1'b0), .rapid_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .run_step_i(StepWidth'(f_s_q)), .run_i(run), .modulus_i,
     .strobe_o(strobe), .saturated_o(saturated)
   );

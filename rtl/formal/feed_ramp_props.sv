@@ -9,9 +9,12 @@
 // - ap_gap: strobes come at least 2^max(LB, 1) clocks apart, so the serial DDA takes every
 //   one (each strobe is one DDA iteration: the pulses are those without the ramp, in order);
 // - ap_moving: after its load clock a block with iterations left has u > 0 unless the
-//   operator holds it (or the hold ended a clock ago): it never stalls;
-// - ap_held_still: held at rest, no strobe (no pulse while held); ap_hold_brakes: held, u
-//   falls by du every clock until it is 0 (a hold brakes at the limit);
+//   operator halts it (holds it or overrides it to 0; or did a clock ago): it never stalls;
+// - ap_held_still: held at rest, no strobe (no pulse while held); ap_hold_brakes: halted,
+//   u falls by du every clock until it is 0 (a hold or a 0 % override brakes at the limit);
+// - ap_up_to_target: u rises above du only up to the block's overridden target,
+//   min(min(S, cap) P >> OverrideFracBits, cap), P the feed override or, for a rapid
+//   traverse, the rapid override (both free, changing at any clock);
 // - ap_rest: the block's last strobe comes at u <= du: it ends at rest (one ramp step);
 // and, inside the module, a_rate_steps (u moves by 0 or du per clock) and a_rate_capped.
 // Environment (what interp_top guarantees): reset in the first clock, feed_modulus_i and
@@ -35,7 +38,10 @@ module feed_ramp_props #(
   input logic          step_over_i,
   input logic [NW-1:0] count_i,    // N of the loading block
   input logic          hold_i,     // the operator, at any clock
-  input logic          start_i
+  input logic          start_i,
+  input logic [interp_pkg::OverrideWidth-1:0] feed_override_i,
+  input logic [interp_pkg::OverrideWidth-1:0] rapid_override_i,
+  input logic          rapid_i     // the loading block is a rapid traverse
 );
 
   localparam int CapBits = LB > 1 ? LB : 1;
@@ -53,7 +59,8 @@ module feed_ramp_props #(
   feed_generator #(.StepWidth(MW + 1), .ModulusWidth(MW), .LeadBits(LB), .Accel(1'b1),
                    .IterWidth(NW)) u_dut (
     .clk_i, .rst_ni, .load_i, .step_i, .step_over_i, .iterations_i(count_i),
-    .accel_step_i(accel_i), .hold_i, .start_i, .run_step_i(f_step_q), .run_i(run), .modulus_i,
+    .accel_step_i(accel_i), .hold_i, .start_i, .feed_override_i, .rapid_override_i, .rapid_i,
+    .run_step_i(f_step_q), .run_i(run), .modulus_i,
     .strobe_o(strobe), .saturated_o(saturated)
   );
 
@@ -63,7 +70,7 @@ module feed_ramp_props #(
   logic          f_init = 1'b1;
   logic [1:0]    f_age_q;
   logic          f_blk_q, f_first_q, f_was_held_q;
-  logic [MW-CapBits-1:0] f_rate_q;  // u in the previous clock
+  logic [MW-CapBits-1:0] f_rate_q, f_target_q;  // u and the model's target in the previous clock
   logic [NW-1:0] f_left_q;
   logic [CapBits:0] f_since_q;
   localparam logic [MW-1:0] f_m_q = MW'(M), f_du_q = MW'(DU);
@@ -75,12 +82,13 @@ module feed_ramp_props #(
     if (!rst_ni) begin
       f_age_q <= '0;  f_blk_q <= 1'b0;  f_step_q <= '0;  f_over_q <= 1'b0;  f_left_q <= '0;
       f_since_q <= (CapBits + 1)'(Gap);  f_first_q <= 1'b0;  f_was_held_q <= 1'b0;
-      f_rate_q <= '0;
+      f_rate_q <= '0;  f_target_q <= '0;
     end else begin
       if (f_age_q != 2'd3) f_age_q <= f_age_q + 1'b1;
       f_first_q <= load_i;
-      f_was_held_q <= tap_held;
+      f_was_held_q <= halted;
       f_rate_q <= tap_rate;
+      f_target_q <= f_target;
       if (load_i) begin
         f_blk_q <= 1'b1;
         f_step_q <= step_i;
@@ -117,11 +125,24 @@ module feed_ramp_props #(
   // formal-tap: tap_cap = u_dut.cap_q
   // formal-tap: tap_capped = u_dut.capped_q
   // formal-tap: tap_held = u_dut.held_q
+  // formal-tap: tap_override = u_dut.override_q
   logic [MW:0]        tap_phase;  // PhaseWidth = MW + 1
   logic [MW-CapBits-1:0] tap_rate, tap_cap;
   logic [NW-1:0]      tap_it;
   logic [MW-1:0]      tap_frac, tap_modulus, tap_accel;
   logic               tap_capped, tap_held;
+  logic [interp_pkg::OverrideWidth-1:0] tap_override;
+
+  // The model's target: S capped, times P, capped; halted (held or P = 0) it is 0.
+  localparam int TW = MW + interp_pkg::OverrideWidth + 1;
+  logic          halted;
+  logic [TW-1:0] f_scaled;
+  logic [MW-CapBits-1:0] f_target;
+  assign halted   = tap_held || tap_override == '0;
+  assign f_scaled = ((f_over_q || (TW'(f_step_q) > TW'(Cap)) ? TW'(Cap) : TW'(f_step_q))
+                     * TW'(tap_override)) >> interp_pkg::OverrideFracBits;
+  assign f_target = halted ? '0 : f_scaled > TW'(Cap) ? (MW - CapBits)'(Cap)
+                                                      : (MW - CapBits)'(f_scaled);
 
   logic [PW-1:0] f_u, f_du, f_m, f_k_pos, f_left, f_v;
   assign f_u     = PW'(tap_rate);
@@ -135,8 +156,9 @@ module feed_ramp_props #(
     if (!f_init && f_blk_q) begin
       if (strobe) ap_run: assert (run);
       if (strobe) ap_gap: assert (f_since_q >= (CapBits + 1)'(Gap - 1));
-      if (run && !f_first_q && !tap_held && !f_was_held_q) ap_moving: assert (tap_rate != '0);
+      if (run && !f_first_q && !halted && !f_was_held_q) ap_moving: assert (tap_rate != '0);
       if (tap_held && tap_rate == '0) ap_held_still: assert (!strobe);
+      if (tap_rate > f_rate_q && f_rate_q != '0) ap_up_to_target: assert (tap_rate <= f_target_q);
       if (f_was_held_q && run && !f_first_q && f_rate_q != '0)
         ap_hold_brakes: assert (PW'(tap_rate) + f_du == PW'(f_rate_q));
       if (strobe && f_left_q == NW'(1)) ap_rest: assert (f_u <= f_du);
@@ -171,6 +193,9 @@ module feed_ramp_props #(
       cp_ramped_block_ends: cover (f_blk_q && f_left_q == NW'(1) && strobe && f_du_q < f_cap);
       // Held to rest mid-block, then started again.
       cp_held_and_started: cover (f_was_held_q && !tap_held && run && tap_rate == '0 && f_left_q > NW'(1));
+      // Cruising at an override below 100 % and above 0, slower than the block's S.
+      cp_overridden: cover (f_blk_q && run && tap_override < interp_pkg::OverrideOne &&
+                            !halted && tap_rate == f_target && TW'(f_target) < TW'(f_step_q));
     end
   end
 

@@ -62,6 +62,7 @@ module interp_top_props #(
     .SeqWidth(NW), .OffsetWidth(OW), .ModulusWidth(MW), .BitSerial(BS)
   ) u_dut (
     .clk_i, .rst_ni, .feed_modulus_i, .rapid_step_i, .accel_step_i(MW'(0)), .hold_i(1'b0), .start_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i, .limit_x_i, .limit_y_i, .frame_i, .frame_valid_i, .tape_end_i,
     .frame_ready_o(frame_ready), .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y),
     .dir_y_o(dir_y), .pos_x_o(pos_x), .pos_y_o(pos_y), .block_n_o(block_n), .busy_o(busy),

@@ -23,6 +23,7 @@ module interp_top_reset_props (
 
   interp_top u_dut (
     .clk_i, .rst_ni(!f_init), .feed_modulus_i, .rapid_step_i, .accel_step_i(48'd0), .hold_i(1'b0), .start_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .frame_i, .frame_valid_i, .tape_end_i,
     .frame_ready_o(frame_ready), .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y),
     .dir_y_o(dir_y), .pos_x_o(pos_x), .pos_y_o(pos_y), .block_n_o(block_n), .busy_o(busy),

@@ -69,6 +69,7 @@ module interp_ice40_top #(
     .clk_i, .rst_ni,
     .feed_modulus_i(ModulusWidth'(FeedModulus)), .rapid_step_i(ModulusWidth'(RapidStep)),
     .accel_step_i(ModulusWidth'(AccelStep)), .hold_i(1'b0), .start_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,

@@ -103,6 +103,8 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.rapid_step = cfg.rapid_step_on_port();
   co.accel_step = cfg.accel_step;
   co.operator_holds = !setup.events.empty();
+  for (const OperatorEvent& e : setup.events)
+    if (e.kind == OperatorEvent::kFeedOverride) co.max_override = std::max<uint32_t>(co.max_override, e.value);
   // The held stretches: each hold press to the next start press. Settling: a ramp down from
   // the cap (M / 2 / du clocks) and a serial iteration in flight.
   for (size_t k = 0; k < setup.events.size(); ++k) {
@@ -120,7 +122,8 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
     co.stop_code = static_cast<uint8_t>(stop_error(stop->kind));
   }
   // Settling: the ramp down from the fastest rate a block of the tape asks (S, an arc's
-  // F 2^(k+1) as its N < 2^(k+1)), and a serial iteration in flight.
+  // F 2^(k+1) as its N < 2^(k+1), times the largest feed override), and a serial iteration
+  // in flight.
   unsigned __int128 fastest = 0;
   for (const ProgrammedBlock& b : blocks) {
     const uint64_t big = static_cast<uint64_t>(std::max({std::llabs(b.tape.dx) + std::llabs(b.tape.i),
@@ -129,6 +132,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
                                            : line_step(b.tape, cfg));
   }
   const uint64_t cap = (cfg.feed_modulus - 1) >> 1;
+  fastest = fastest * co.max_override / kOverrideOne;
   const uint64_t top = fastest < cap ? static_cast<uint64_t>(fastest) : cap;
   co.hold_settle = (cfg.accel_step ? top / cfg.accel_step : 0) + 2 +
                    (cfg.serial() ? 2 * SerialDda::iteration_clocks(cfg.inc_width) : 1);
@@ -151,17 +155,24 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
     }
   };
   FrameSource source(frames, cpf, setup.events);
+  // A run that a stop ended is watched on for pulses the stop should have muted.
+  auto watch_past_stop = [&](auto& dut, const RunEnd& end) {
+    if (end.last.error && is_stop_error(end.last.error_code))
+      run_past_stop(dut, source, end.cycles, SerialDda::stop_watch_clocks(cfg.inc_width),
+                    [&checker](uint64_t c, const InterpOutputs& o) { checker.observe_after_stop(c, o); });
+    return end;
+  };
   const auto t0 = std::chrono::steady_clock::now();
   if (setup.engine == EngineKind::kGolden) {
     GoldenInterp dut(cfg);
     if (setup.fault) dut.inject(*setup.fault);
-    out.run = setup.every_clock ? run_engine(dut, source, budget, observe)
-                                : run_engine_jumping(dut, source, budget, checker, observe);
+    out.run = watch_past_stop(dut, setup.every_clock ? run_engine(dut, source, budget, observe)
+                                                     : run_engine_jumping(dut, source, budget, checker, observe));
   } else {
 #ifdef NCINTERP_CHECKER_HAS_RTL
     out.run = with_rtl_model(cfg.arch, [&](auto model) {
       VerilatedInterp<typename decltype(model)::type> dut(cfg, rtl_built_config(cfg.arch));
-      return run_engine(dut, source, budget, observe);
+      return watch_past_stop(dut, run_engine(dut, source, budget, observe));
     });
 #endif
   }

@@ -58,6 +58,21 @@ RunEnd run_engine(Engine& engine, FrameSource& source, uint64_t max_cycles, Obse
   return end;
 }
 
+// After a run that a stop (E-stop, a limit) ended: `clocks` more clocks of the engine and
+// its source, each clock's outputs to observe (from_cycle + 1 on), so that a pulse the stop
+// should have muted shows. The run's end stays the stop's.
+template <class Engine, class Observer>
+void run_past_stop(Engine& engine, FrameSource& source, uint64_t from_cycle, uint64_t clocks,
+                   Observer&& observe) {
+  InterpOutputs read;
+  for (uint64_t k = 1; k <= clocks; ++k) {
+    const bool ready = current_outputs(engine, read).frame_ready;
+    engine.tick(source.inputs());
+    source.clock(ready);
+    observe(from_cycle + k, current_outputs(engine, read));
+  }
+}
+
 // The golden model with event jumping: where the model, the reader and the observer all
 // allow it (GoldenInterp::quiet_ticks, FrameSource::steady_clocks, checker.quiet_limit()),
 // the quiet clocks are passed in one step and reported to checker.observe_quiet(); every

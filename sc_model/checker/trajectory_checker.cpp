@@ -193,10 +193,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
   } else if (pulsed) {
     report(Rule::kIdlePulse, cycle, "step pulse while no block plays");
   }
-  if (pulsed && cycle > options_.stop_cycle)
-    report(Rule::kStop, cycle,
-           "step pulse " + std::to_string(cycle - options_.stop_cycle) + " clock(s) after the stop at clock " +
-               std::to_string(options_.stop_cycle));
+  if (pulsed && cycle > options_.stop_cycle) report_pulse_after_stop(cycle);
   if (pulsed) {
     for (HoldStop& h : hold_stops_) {
       if (cycle > h.resumed) continue;
@@ -286,11 +283,17 @@ void TrajectoryChecker::end_block(uint64_t cycle) {
                  std::to_string(d[a] >= 0 ? progress_[a] : -progress_[a]) + " BLU, programmed " +
                  std::to_string(d[a]));
   }
+  // Overridden faster, a block's rate is at most P / 100 % of its S: the bound shrinks by that,
+  // less a clock for the rounding of ceil(M/F).
+  const uint64_t shortest =
+      options_.max_override > kOverrideOne
+          ? (schedule_.duration() - 1) * kOverrideOne / options_.max_override
+          : schedule_.duration();
   if (options_.schedule && timed(b) && load_known_ &&
-      (ramped() ? r.clocks < schedule_.duration() : r.clocks != schedule_.duration()))
+      (ramped() ? r.clocks < shortest : r.clocks != schedule_.duration()))
     report(Rule::kDuration, cycle,
            "block took " + std::to_string(r.clocks) + " clocks, documented " +
-               (ramped() ? "at least " : "") + std::to_string(schedule_.duration()));
+               (ramped() ? "at least " : "") + std::to_string(shortest));
   active_ = false;
   reported_ = 0;
 }
@@ -424,6 +427,16 @@ void TrajectoryChecker::check_acceleration(uint64_t cycle) {
   }
   event_j_[events_ - 1] = iterations_;
   event_t_[events_ - 1] = cycle;
+}
+
+void TrajectoryChecker::report_pulse_after_stop(uint64_t cycle) {
+  report(Rule::kStop, cycle,
+         "step pulse " + std::to_string(cycle - options_.stop_cycle) + " clock(s) after the stop at clock " +
+             std::to_string(options_.stop_cycle));
+}
+
+void TrajectoryChecker::observe_after_stop(uint64_t cycle, const InterpOutputs& o) {
+  if (o.step_x || o.step_y) report_pulse_after_stop(cycle);
 }
 
 void TrajectoryChecker::finish(const InterpOutputs& o) {

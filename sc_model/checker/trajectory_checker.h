@@ -17,7 +17,8 @@
 //   bound     each pulse position is within the interpolator's bound of the block's path;
 //   endpoint  at the block's end each axis has emitted exactly its increment;
 //   duration  (G01 blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
-//             at least that with the ramp, and feed_saturated_o says whether F << k >= M;
+//             at least that with the ramp (at a feed override of up to P > 100 %, at least
+//             that times 100 % / P), and feed_saturated_o says whether F << k >= M;
 //   held      no pulse while the operator holds (--events), once the machine can be at
 //             rest: from the hold's press plus CheckerOptions::hold_settle clocks (the
 //             ramp down from the fastest rate and a serial iteration in flight) to start;
@@ -128,6 +129,9 @@ struct CheckerOptions {
   // rule that it takes at least the programmed time, and the acceleration rule holds.
   uint64_t accel_step = 0;
   bool operator_holds = false;  // the run has the operator's presses (--events): as ramped
+  // The largest feed override of the events, in units of 1 / kOverrideOne (at least 100 %):
+  // a block may play that much faster than programmed.
+  uint32_t max_override = kOverrideOne;
   // The held stretches (press of hold, press of start; UINT64_MAX: none), and the clocks
   // after a hold's press in which pulses may still come.
   std::vector<std::pair<uint64_t, uint64_t>> holds;
@@ -169,6 +173,9 @@ class TrajectoryChecker {
   // comes after it.
   void observe_quiet(uint64_t cycle, const InterpOutputs& o);
   uint64_t quiet_limit() const;
+  // A clock after the run ended on its stop (engine_run.h's run_past_stop()): a step pulse
+  // breaks the stop rule.
+  void observe_after_stop(uint64_t cycle, const InterpOutputs& o);
   // End of the run, with the last outputs observed: the complete rule, an engine's tape
   // error. (The checker keeps per clock only what the next clock needs, not a copy of
   // the outputs: see engine_run.h.)
@@ -212,6 +219,7 @@ class TrajectoryChecker {
   bool same_n_by_time() const;
   bool same_n_by_pulses() const;
   void report(Rule rule, uint64_t cycle, std::string detail);
+  void report_pulse_after_stop(uint64_t cycle);
 
   std::vector<ProgrammedBlock> blocks_;
   std::vector<BlockResult> results_;

@@ -27,7 +27,7 @@ Result run_lockstep_on(Rtl& rtl, const std::vector<uint8_t>& frames, const Optio
   // A stop (E-stop, a limit) ends the run once no iteration can still be in flight: the
   // engines are compared for two serial iterations more, so a pulse after the stop shows.
   uint64_t stop_cycle = 0;
-  const uint64_t stop_settle = 2 * SerialDda::iteration_clocks(options.config.inc_width);
+  const uint64_t stop_settle = SerialDda::stop_watch_clocks(options.config.inc_width);
   auto compare = [&]() {
     if (rtl.same_as(golden.outputs())) return true;
     Mismatch m = first_difference(golden.outputs(), rtl.outputs());

@@ -64,6 +64,7 @@ class VerilatedInterp {
     m.frame_i = 0;
     m.frame_valid_i = 0;
     m.tape_end_i = 0;
+    m.feed_override_i = m.rapid_override_i = kOverrideOne;
     clock(dump);
     m.rst_ni = 1;
   }
@@ -79,6 +80,8 @@ class VerilatedInterp {
     m.tape_end_i = in.tape_end;
     m.hold_i = in.hold;
     m.start_i = in.start;
+    m.feed_override_i = in.feed_override;
+    m.rapid_override_i = in.rapid_override;
     m.estop_i = in.estop;
     m.limit_x_i = in.limit_x;
     m.limit_y_i = in.limit_y;

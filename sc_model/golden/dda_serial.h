@@ -33,6 +33,9 @@ class SerialDda {
   // An iteration's clocks, 2P, and their log2: the feed generator's lead
   // (feed_generator.sv's LeadBits).
   static unsigned iteration_clocks(unsigned inc_width) { return 2 * pass_length(inc_width); }
+  // The clocks after a stop (E-stop, a limit) that a run is watched on for a pulse an
+  // unmuted iteration in flight would still emit: two iterations, in both archs.
+  static unsigned stop_watch_clocks(unsigned inc_width) { return 2 * iteration_clocks(inc_width); }
   static unsigned lead_bits(unsigned inc_width) {
     unsigned bits = 1;  // 2P = 2^bits
     while ((1u << bits) < 2 * inc_width) ++bits;

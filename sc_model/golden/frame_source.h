@@ -1,6 +1,6 @@
 // Tape reader model: delivers a tape's frames to the interpolator over valid/ready at a
 // reader rate, one clock at a time, and with them the operator's presses (feed hold, cycle
-// start, E-stop, limits: operator_events.h) at their clocks. Plain C++ so the lock-step cosim and
+// start, E-stop, limits: operator_events.h) at their clocks and the overrides' levels. Plain C++ so the lock-step cosim and
 // the SystemC tape-reader module use the very same timing.
 // Idea: a start/stop reader needs `cycles_per_frame` clocks to bring the next character
 // under the read head; the character stays valid until the decoder takes it (valid and
@@ -37,15 +37,21 @@ class FrameSource {
     in.frame_valid = next_ < frames_.size() && countdown_ == 0;
     in.frame = in.frame_valid ? frames_[next_] : 0;
     in.tape_end = next_ >= frames_.size();
+    in.feed_override = feed_override_;
+    in.rapid_override = rapid_override_;
     for (size_t k = next_event_; k < events_.size() && events_[k].cycle == clocks_ + 1; ++k)
-      press(in, events_[k].kind);
+      press(in, events_[k]);
     return in;
   }
 
   // One rising edge; `ready` is the interpolator's frame_ready before that edge.
   void clock(bool ready) {
     ++clocks_;
-    while (next_event_ < events_.size() && events_[next_event_].cycle <= clocks_) ++next_event_;
+    for (; next_event_ < events_.size() && events_[next_event_].cycle <= clocks_; ++next_event_) {
+      const OperatorEvent& e = events_[next_event_];
+      if (e.kind == OperatorEvent::kFeedOverride) feed_override_ = e.value;
+      if (e.kind == OperatorEvent::kRapidOverride) rapid_override_ = e.value;
+    }
     if (next_ >= frames_.size()) return;
     if (countdown_ > 0) {
       --countdown_;
@@ -76,6 +82,7 @@ class FrameSource {
   std::vector<uint8_t> frames_;
   std::vector<OperatorEvent> events_;  // sorted by cycle
   size_t next_event_ = 0;              // the first not yet past
+  uint16_t feed_override_ = kOverrideOne, rapid_override_ = kOverrideOne;  // the levels set
   uint64_t clocks_ = 0;                // edges so far: the current clock is clocks_ + 1
   uint64_t cycles_per_frame_;
   uint64_t next_ = 0;      // index of the frame under the read head

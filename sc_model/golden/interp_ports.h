@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "bit_length.h"
+#include "feed_override.h"
 #include "tape.h"
 #include "tape_errors.h"
 
@@ -141,6 +142,11 @@ struct InterpInputs {
   // hold, until the clock after start (hold wins when both come together).
   bool hold = false;
   bool start = false;
+  // The feed override (G01, G02, G03) and the rapid override (G00), feed_override_i and
+  // rapid_override_i: with the ramp, a block plays at this fraction of its rate, in units of
+  // 1 / kOverrideOne (feed_override.h); levels, not presses.
+  uint16_t feed_override = kOverrideOne;
+  uint16_t rapid_override = kOverrideOne;
   // The stops (estop_i, limit_x_i, limit_y_i): one seen at an edge while the program runs
   // stops the machine until reset, in the error state with its code.
   bool estop = false;

@@ -51,7 +51,9 @@ void GoldenInterp::reset() {
   next_taken_cycle_ = words_end_cycle_ = 0;
   feed_step_ = phase_ = 0;
   saturated_ = false;
-  rate_ = rate_target_ = 0;
+  rate_ = rate_base_ = rate_target_ = 0;
+  rapid_ = false;
+  override_ = kOverrideOne;
   slack_ = 0;
   held_ = false;
   stop_ = 0;
@@ -71,6 +73,7 @@ void GoldenInterp::reset() {
 uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   using State = GoldenTapeDecoder::State;
   if ((in.hold || (held_ && !in.start)) != held_) return 0;  // the hold register changes
+  if (accel_step_ > 0 && override_input(in) != override_) return 0;  // the override changes
   if ((in.estop || in.limit_x || in.limit_y) && !out_.done && !out_.error) return 0;  // a stop latches
   if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
   const bool busy = out_.busy;
@@ -91,7 +94,7 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
     // the jump. Otherwise a saturated block strobes at every edge.
     const bool ramped = accel_step_ > 0;
     // Held at rest, or stopped, the feed generator does nothing.
-    const bool stopped = stop_ != 0 || (held_ && (!ramped || rate_ == 0));
+    const bool stopped = stop_ != 0 || (ramped ? halted() && rate_ == 0 : held_);
     if (player_running_)
       n = std::min(n, serial_.quiet_edges());
     else if (saturated_ && !ramped && !stopped)
@@ -100,7 +103,7 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
     // With ramps only a cruise is quiet: u as close below its target as du allows, and
     // each edge j stays there while K - j u > u.
     if (ramped) {
-      if (held_ || rate_ == 0 || rate_ > rate_target_ || rate_ + accel_step_ <= rate_target_ ||
+      if (halted() || rate_ == 0 || rate_ > rate_target_ || rate_ + accel_step_ <= rate_target_ ||
           slack_ <= rate_)
         return 0;
       n = std::min(n, static_cast<uint64_t>((slack_ - 1) / static_cast<__int128>(rate_)));
@@ -117,7 +120,8 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
 
 void GoldenInterp::skip(uint64_t n) {
   cycle_ += n;
-  if (out_.busy && !player_done_ && stop_ == 0 && !(held_ && (accel_step_ == 0 || rate_ == 0))) {
+  if (out_.busy && !player_done_ && stop_ == 0 &&
+      !(accel_step_ > 0 ? halted() && rate_ == 0 : held_)) {
     if (accel_step_ > 0) {  // a cruise: no strobe, u stays
       phase_ += n * rate_;
       slack_ -= static_cast<__int128>(n) * rate_;
@@ -156,7 +160,9 @@ void GoldenInterp::load_block() {
   phase_ = saturated_ ? 0 : feed_step_ << lead_bits_;
   if (accel_step_ > 0) {
     // A ramped block starts from standstill: u = 0, the phase empty, N M phase units to go.
-    rate_target_ = b.step_over ? rate_cap_ : std::min(feed_step_, rate_cap_);
+    rate_base_ = b.step_over ? rate_cap_ : std::min(feed_step_, rate_cap_);
+    rapid_ = b.motion == static_cast<uint8_t>(tape::Motion::kRapid);
+    rate_target_ = overridden_target();
     rate_ = 0;
     phase_ = 0;
     slack_ = static_cast<__int128>(b.iterations) * modulus_;
@@ -168,6 +174,17 @@ void GoldenInterp::load_block() {
   out_.busy = true;
   out_.feed_saturated = saturated_;
   ++loads_;
+}
+
+// feed_generator.sv's override_q and target: the product's fraction bits dropped.
+void GoldenInterp::override_edge(const InterpInputs& in) {
+  override_ = override_input(in);
+  rate_target_ = overridden_target();
+}
+
+uint64_t GoldenInterp::overridden_target() const {
+  const unsigned __int128 scaled = static_cast<unsigned __int128>(rate_base_) * override_;
+  return static_cast<uint64_t>(std::min<unsigned __int128>(scaled >> kOverrideFracBits, rate_cap_));
 }
 
 void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {

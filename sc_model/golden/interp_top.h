@@ -61,6 +61,14 @@ class GoldenInterp {
  private:
   inline void player_edge(bool strobe);  // the player's DDA at an edge of a playing block
   inline void ramp_edge();               // the rate u for the next clock
+  void override_edge(const InterpInputs& in);  // the override register, and the target
+  uint64_t overridden_target() const;          // min(rate_base_ P / kOverrideOne, rate_cap_)
+  // The playing block's override P (override_q), from its rapid flag.
+  uint16_t override_input(const InterpInputs& in) const {
+    return (rapid_ ? in.rapid_override : in.feed_override) & ((1u << kOverrideWidth) - 1);
+  }
+  // held_, or (with the ramp) the override at 0: the target is 0, no start from rest.
+  bool halted() const { return held_ || override_ == 0; }
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
   void status_edge();                       // done / error when the player is empty
@@ -102,13 +110,17 @@ class GoldenInterp {
   bool saturated_ = false;
   // The ramp (accel_step_ > 0, docs/motion-control.md): the phase grows by rate_ (u, a
   // multiple of du = accel_step_ from 0), which moves by at most du per clock toward
-  // rate_target_, the block's S capped at rate_cap_ (u < M / 2 and u 2^lead_bits_ < M: at
-  // most one strobe in 2 clocks, or per serial iteration). slack_: K, the phase units to
+  // rate_target_: rate_base_, the block's S capped at rate_cap_ (u < M / 2 and
+  // u 2^lead_bits_ < M: at most one strobe in 2 clocks, or per serial iteration), times the
+  // override P (override_, the feed override, or for a rapid_ block the rapid override), in
+  // units of 1 / kOverrideOne, capped again. slack_: K, the phase units to
   // the block's last strobe (N M at the load, less each clock's u) less what a stop from u
   // adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block (ramp_edge()
   // brakes in time), so the block ends at u <= du.
   uint64_t accel_step_ = 0, rate_cap_ = 0;
-  uint64_t rate_ = 0, rate_target_ = 0;
+  uint64_t rate_ = 0, rate_base_ = 0, rate_target_ = 0;
+  bool rapid_ = false;
+  uint16_t override_ = kOverrideOne;
   __int128 slack_ = 0;
   // Feed hold (hold_i until start_i): no strobe without ramps; with them, the target 0.
   bool held_ = false;
@@ -184,6 +196,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
   held_ = in.hold || (held_ && !in.start);
+  if (accel_step_ > 0 && override_input(in) != override_) override_edge(in);
   if (stop_now) stop_edge(in);
 }
 
@@ -196,15 +209,16 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
 // is not above its target, or creep at u = du while the block has phase left; else down by
 // du, which leaves K as it is (B(u - du) = B(u) - u). The compares are strict, as the
 // hardware's are (it keeps K as whole iterations and a fraction).
-// Held, the target is 0 and neither the start from rest nor the creep applies: u ramps
-// down to 0 and stays there, and the phase stops.
+// Halted (held, or the override at 0), the target is 0 and neither the start from rest nor
+// the creep applies: u ramps down to 0 and stays there, and the phase stops.
 inline void GoldenInterp::ramp_edge() {
-  const uint64_t u = rate_, du = accel_step_, target = held_ ? 0 : rate_target_;
+  const bool halt = halted();
+  const uint64_t u = rate_, du = accel_step_, target = halt ? 0 : rate_target_;
   const __int128 w = static_cast<__int128>(u), up = 2 * w + static_cast<__int128>(du);
-  if (u == 0 && !held_ ? slack_ > 0 : u + du <= target && slack_ > up) {
+  if (u == 0 && !halt ? slack_ > 0 : u + du <= target && slack_ > up) {
     rate_ = u + du;
     slack_ -= up;
-  } else if ((u <= target && slack_ > w) || (u == du && !held_ && slack_ > 0)) {
+  } else if ((u <= target && slack_ > w) || (u == du && !halt && slack_ > 0)) {
     slack_ -= w;
   } else if (u > 0) {
     rate_ = u - du;

@@ -14,6 +14,7 @@ namespace {
 
 // The names of --events and their presses; "resume" is cycle start's other name (events_text()
 // writes the first name of a kind).
+// An override's name is followed by =P.
 struct EventName {
   const char* name;
   OperatorEvent::Kind kind;
@@ -21,7 +22,26 @@ struct EventName {
 constexpr EventName kEventNames[] = {
     {"hold", OperatorEvent::kHold},    {"start", OperatorEvent::kStart},    {"resume", OperatorEvent::kStart},
     {"estop", OperatorEvent::kEStop},  {"limit-x", OperatorEvent::kLimitX}, {"limit-y", OperatorEvent::kLimitY},
+    {"override", OperatorEvent::kFeedOverride}, {"rapid-override", OperatorEvent::kRapidOverride},
 };
+constexpr const char* kNameList =
+    "hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y";
+
+bool is_override(OperatorEvent::Kind kind) {
+  return kind == OperatorEvent::kFeedOverride || kind == OperatorEvent::kRapidOverride;
+}
+
+// P of "override=P" or "rapid-override=P" in units of 1 / kOverrideOne; `bad` builds the error.
+template <class Bad>
+uint16_t parse_override(OperatorEvent::Kind kind, const std::string& percent, const Bad& bad) {
+  char* stop = nullptr;
+  const double p = std::strtod(percent.c_str(), &stop);
+  if (percent.empty() || *stop != '\0' || !(p >= 0) || !(p <= 200))
+    throw bad("needs a percentage from 0 to 200 after =, e.g. override=50@1.5s");
+  if (kind == OperatorEvent::kRapidOverride && p != 25 && p != 50 && p != 100)
+    throw bad("needs 25, 50 or 100 after = (the rapid override's steps, ISO's and grbl's)");
+  return static_cast<uint16_t>(std::llround(p * kOverrideOne / 100));
+}
 
 }  // namespace
 
@@ -36,19 +56,22 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
       return std::invalid_argument("--events: '" + item + "' " + why);
     };
     if (at == std::string::npos) throw bad("has no @T (e.g. hold@0.8s)");
-    const std::string name = item.substr(0, at), when = item.substr(at + 1);
+    const std::string word = item.substr(0, at), when = item.substr(at + 1);
+    const size_t eq = word.find('=');
+    const std::string name = word.substr(0, eq);
     char* stop = nullptr;
     const double t = std::strtod(when.c_str(), &stop);
     if (when.empty() || stop == when.c_str() || std::string(stop) != "s" || !(t >= 0) || !(t <= 1e6))
       throw bad("needs a time in seconds from 0 to 10^6, e.g. @1.5s");
     const auto known = std::find_if(std::begin(kEventNames), std::end(kEventNames),
                                     [&](const EventName& n) { return name == n.name; });
-    if (known == std::end(kEventNames)) {
-      if (name.rfind("override=", 0) == 0 || name.rfind("rapid-override=", 0) == 0)
-        throw bad("is not built yet: this interpolator has hold, resume, start, estop, limit-x and limit-y");
-      throw bad("is not an event (hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y)");
-    }
-    events.push_back({static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, known->kind});
+    if (known == std::end(kEventNames)) throw bad(std::string("is not an event (") + kNameList + ")");
+    if (is_override(known->kind) != (eq != std::string::npos))
+      throw bad(is_override(known->kind) ? "needs =P, a percentage (e.g. override=50@1.5s)"
+                                         : "takes no =value");
+    const uint16_t value =
+        is_override(known->kind) ? parse_override(known->kind, word.substr(eq + 1), bad) : 0;
+    events.push_back({static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, known->kind, value});
     pos = end + 1;
   }
   sort_by_clock(events);
@@ -65,11 +88,16 @@ std::string events_text(const std::vector<OperatorEvent>& events, double clock_h
   for (const OperatorEvent& e : events) {
     const auto named = std::find_if(std::begin(kEventNames), std::end(kEventNames),
                                     [&](const EventName& n) { return n.kind == e.kind; });
-    char at[64];
+    char value[64] = "", at[64];
+    if (is_override(e.kind)) std::snprintf(value, sizeof value, "=%.17g", override_percent(e.value));
     std::snprintf(at, sizeof at, "@%.17gs", static_cast<double>(e.cycle - 1) / clock_hz);
-    text += (text.empty() ? "" : ",") + std::string(named->name) + at;
+    text += (text.empty() ? "" : ",") + std::string(named->name) + value + at;
   }
   return text;
+}
+
+bool has_override(const std::vector<OperatorEvent>& events) {
+  return std::any_of(events.begin(), events.end(), [](const OperatorEvent& e) { return is_override(e.kind); });
 }
 
 const OperatorEvent* first_stop(const std::vector<OperatorEvent>& events) {

@@ -1,7 +1,8 @@
 // The operator's actions during a run (`--events`, docs/motion-control.md): feed hold, cycle
 // start, E-stop and the limit switches as the interpolator's hold_i, start_i, estop_i,
 // limit_x_i and limit_y_i, each a one-clock press at its time (a stop latches: one clock
-// stops the machine as a held button does).
+// stops the machine as a held button does); the feed and rapid overrides as the levels of
+// feed_override_i and rapid_override_i from their time on.
 // Idea: a run's inputs are the tape reader's frames (FrameSource) and these presses; both
 // are plain data on the clock, so the golden model, the RTL in lock step, `check` and
 // `play` see the very same clocks.
@@ -15,15 +16,17 @@
 namespace ncinterp {
 
 struct OperatorEvent {
-  enum Kind { kHold, kStart, kEStop, kLimitX, kLimitY };
+  enum Kind { kHold, kStart, kEStop, kLimitX, kLimitY, kFeedOverride, kRapidOverride };
   uint64_t cycle;  // the clock (1 = the first after reset) at which the button is down
   Kind kind;
+  uint16_t value = 0;  // an override's P, in units of 1 / kOverrideOne
 };
 
-// "hold@0.8s,resume@1.2s,estop@2s": hold, resume (= start), start, estop, limit-x and limit-y
-// at T seconds of machine time, in clocks of clock_hz; sorted by time. override=P and
-// rapid-override=P are refused as not built yet; anything else is refused naming the item
-// and the names. Throws std::invalid_argument.
+// "hold@0.8s,resume@1.2s,override=50@1.5s,estop@2s": hold, resume (= start), start,
+// override=P (P percent, 0 to 200, rounded to the nearest 1/128), rapid-override=P (25, 50
+// or 100), estop, limit-x and limit-y at T seconds of machine time, in clocks of clock_hz;
+// sorted by time. Anything else is refused naming the item and the names. Throws
+// std::invalid_argument.
 std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz);
 
 // Orders events by clock, presses of one clock in their given order (parse_events() does).
@@ -33,16 +36,23 @@ void sort_by_clock(std::vector<OperatorEvent>& events);
 // back at clock_hz.
 std::string events_text(const std::vector<OperatorEvent>& events, double clock_hz);
 
-// The press of `kind` in the inputs of its clock.
-inline void press(InterpInputs& in, OperatorEvent::Kind kind) {
-  switch (kind) {
+// The press of `e` in the inputs of its clock (an override: the level it sets).
+inline void press(InterpInputs& in, const OperatorEvent& e) {
+  switch (e.kind) {
     case OperatorEvent::kHold: in.hold = true; break;
     case OperatorEvent::kStart: in.start = true; break;
     case OperatorEvent::kEStop: in.estop = true; break;
     case OperatorEvent::kLimitX: in.limit_x = true; break;
     case OperatorEvent::kLimitY: in.limit_y = true; break;
+    case OperatorEvent::kFeedOverride: in.feed_override = e.value; break;
+    case OperatorEvent::kRapidOverride: in.rapid_override = e.value; break;
   }
 }
+
+// The overrides of `events` (they need the ramp: an override changes the rate at the limit).
+bool has_override(const std::vector<OperatorEvent>& events);
+// An override's P in percent (its value in units of 1 / kOverrideOne).
+inline double override_percent(uint16_t value) { return 100.0 * value / kOverrideOne; }
 
 // The first stop (E-stop or a limit) of `events`, or nullptr.
 const OperatorEvent* first_stop(const std::vector<OperatorEvent>& events);

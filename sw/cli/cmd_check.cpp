@@ -72,7 +72,7 @@ int run(const CheckArgs& a) {
   setup.arch = a.arch;
   setup.rapid_mm_min = a.rapid_mm_min;
   setup.accel_mm_s2 = a.accel_mm_s2;
-  setup.events = parse_events(a.events, a.clock_hz);
+  setup.events = machine_events(a.events, a.clock_hz, a.accel_mm_s2);
   setup.tol_mm = a.tol_mm;
   setup.cutter_radius_mm = a.cutter_radius_mm;
   setup.cutter_left = a.side == "left";

@@ -128,7 +128,7 @@ int run(const CosimArgs& a) {
 
   cosim::Options o;
   o.config = interp_config(a.clock_hz, {}, a.rapid_mm_min, a.accel_mm_s2);
-  o.events = parse_events(a.events, a.clock_hz);
+  o.events = machine_events(a.events, a.clock_hz, a.accel_mm_s2);
   o.config.arch = a.arch;
   o.cycles_per_frame = FrameSource::cycles_per_frame_for(a.clock_hz, a.reader_cps);
   // Default limit: every frame read and every (good) block at its programmed or saturated

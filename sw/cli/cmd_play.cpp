@@ -54,7 +54,7 @@ int run(const PlayArgs& a) {
   opt.arch = a.arch;
   opt.rapid_mm_min = a.rapid_mm_min;
   opt.accel_mm_s2 = a.accel_mm_s2;
-  opt.events = parse_events(a.events, a.clock_hz);
+  opt.events = machine_events(a.events, a.clock_hz, a.accel_mm_s2);
   opt.clock_hz = a.clock_hz;
   opt.reader_cps = a.reader_cps;
   opt.vcd_path = a.vcd;

@@ -6,9 +6,12 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <map>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "interp_ports.h"
+#include "operator_events.h"
 
 namespace ncinterp::cli {
 
@@ -38,13 +41,27 @@ inline CLI::Option* add_accel_option(CLI::App* cmd, double& accel_mm_s2) {
 // ended (README, "Exit codes"): nothing failed, but the program did not run to its end.
 inline constexpr int kExitStopped = 5;
 
-// --events LIST into `events`: the operator's presses, e.g. hold@0.8s,resume@1.2s
-// (parse_events(), operator_events.h, reads it once the clock is known).
+// --events LIST into `events`: the operator's actions, e.g. hold@0.8s,resume@1.2s
+// (machine_events() reads it once the clock is known).
 inline CLI::Option* add_events_option(CLI::App* cmd, std::string& events) {
   return cmd->add_option("--events", events,
                          "The operator's actions in machine time, comma-separated: hold@Ts (feed "
-                         "hold), resume@Ts or start@Ts (cycle start), e.g. hold@0.8s,resume@1.2s "
+                         "hold), resume@Ts or start@Ts (cycle start), override=P@Ts (feed override, "
+                         "0-200 %), rapid-override=P@Ts (25, 50, 100 %), estop@Ts, limit-x@Ts, "
+                         "limit-y@Ts, e.g. hold@0.8s,resume@1.2s,override=50@1.5s "
                          "(docs/motion-control.md)");
+}
+
+// The --events list at `clock_hz` (parse_events()); an override needs the ramp (--accel), since
+// it changes the rate at the acceleration limit. Throws std::invalid_argument.
+inline std::vector<OperatorEvent> machine_events(const std::string& list, double clock_hz,
+                                                 double accel_mm_s2) {
+  std::vector<OperatorEvent> events = parse_events(list, clock_hz);
+  if (accel_mm_s2 <= 0 && has_override(events))
+    throw std::invalid_argument(
+        "--events: an override needs --accel: it changes the rate at the acceleration limit, and "
+        "without a limit there are no ramps (docs/motion-control.md)");
+  return events;
 }
 
 // --arch serial|parallel into `arch` (default: serial, what the boards ship).

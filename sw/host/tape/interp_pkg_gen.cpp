@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "atomic_file.h"
+#include "feed_override.h"
 
 namespace {
 
@@ -259,6 +260,18 @@ std::string package(const std::string& tape_dir) {
   code_function(out, "g_setting", "A G code that states what the interpolator always does (tape_codes.def).",
                 codes('G', "Setting"));
   code_function(out, "m_end", "An M code that ends the program (tape_codes.def).", codes('M', "End"));
+  out << "\n"
+         "  // The feed and rapid overrides (feed_override_i, rapid_override_i): a fraction of\n"
+         "  // the block's rate in units of 2^-OverrideFracBits (feed_override.h); OverrideOne is\n"
+         "  // 100 %, what a machine without an operator's override ties the inputs to. Only\n"
+         "  // the feed generator and the tops read them.\n"
+         "  /* verilator lint_off UNUSEDPARAM */\n"
+         "  localparam int OverrideWidth = "
+      << ncinterp::kOverrideWidth << ";\n"
+      << "  localparam int OverrideFracBits = " << ncinterp::kOverrideFracBits << ";\n"
+      << "  localparam logic [OverrideWidth-1:0] OverrideOne = " << ncinterp::kOverrideWidth << "'d"
+      << ncinterp::kOverrideOne << ";\n"
+      << "  /* verilator lint_on UNUSEDPARAM */\n";
   out << "\n"
          "  // Error codes: error_code_o (0 while error_o is low).\n"
          "  localparam int ErrCodeWidth = "

@@ -68,6 +68,7 @@ module interp_fpga_top #(
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i(modulus_q), .rapid_step_i(rapid_q), .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
+    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,

@@ -34,10 +34,11 @@ tape::Program random_line_program(std::mt19937& rng, int blocks, unsigned max_bi
 }
 
 std::vector<InterpOutputs> golden_trace(const std::vector<uint8_t>& frames, const InterpConfig& cfg,
-                                        uint64_t cycles_per_frame, const GoldenInterp::Fault* fault) {
+                                        uint64_t cycles_per_frame, const GoldenInterp::Fault* fault,
+                                        const std::vector<OperatorEvent>& events) {
   GoldenInterp dut(cfg);
   if (fault) dut.inject(*fault);
-  FrameSource source(frames, cycles_per_frame);
+  FrameSource source(frames, cycles_per_frame, events);
   std::vector<InterpOutputs> trace;
   run_engine(dut, source, 50'000'000, [&](uint64_t, const InterpOutputs& o) { trace.push_back(o); });
   return trace;

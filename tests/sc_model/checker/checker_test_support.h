@@ -18,9 +18,11 @@ std::vector<uint8_t> frames_of(const tape::Program& program, const tape::Format&
 tape::Program random_line_program(std::mt19937& rng, int blocks, unsigned max_bits,
                                   uint64_t modulus, uint64_t min_clocks, uint64_t max_clocks);
 
-// Every output of the golden model after every clock (index = cycle).
+// Every output of the golden model after every clock (index = cycle), with the operator's
+// `events`.
 std::vector<InterpOutputs> golden_trace(const std::vector<uint8_t>& frames, const InterpConfig& cfg,
                                         uint64_t cycles_per_frame,
-                                        const GoldenInterp::Fault* fault = nullptr);
+                                        const GoldenInterp::Fault* fault = nullptr,
+                                        const std::vector<OperatorEvent>& events = {});
 
 }  // namespace ncinterp::checker::test

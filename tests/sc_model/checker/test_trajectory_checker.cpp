@@ -198,6 +198,42 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
   }
 }
 
+// Overrides in check (--events): runs at 200 %, at 30 % and changing mid-block pass every
+// rule on both archs; a checker not told of the 200 % finds the parallel player's blocks
+// shorter than documented (the duration rule, and only it).
+TEST(TrajectoryChecker, OverriddenRunsPassAndAFasterOneFailsTheDurationRuleUntold) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    std::mt19937 rng(15);
+    CheckSetup setup;
+    setup.clock_hz = 1e6;
+    setup.arch = arch;
+    setup.accel_mm_s2 = 500;
+    setup.reader_cps = 1e6;
+    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+    const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+    const std::vector<std::vector<OperatorEvent>> lists = {
+        {{1, OperatorEvent::kFeedOverride, 256}},
+        {{1, OperatorEvent::kFeedOverride, 38}},
+        {{40000, OperatorEvent::kFeedOverride, 200}, {70000, OperatorEvent::kFeedOverride, 0},
+         {90000, OperatorEvent::kFeedOverride, 100}}};
+    for (size_t k = 0; k < lists.size(); ++k) {
+      setup.events = lists[k];
+      const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
+      ASSERT_TRUE(out.passed()) << arch_name(arch) << " list " << k << ": " << first_violation(*out.checker);
+    }
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
+    cfg.arch = arch;
+    CheckerOptions co = options_for(cfg);
+    co.operator_holds = true;
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1, nullptr, lists[0]);
+    TrajectoryChecker c(lay_out(p), nullptr, co);
+    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+    c.finish(trace.back());
+    if (arch == Arch::kParallel) EXPECT_GT(c.violation_count(), 0u);
+    for (const Violation& v : c.violations()) EXPECT_EQ(v.rule, Rule::kDuration) << arch_name(arch) << ": " << v.detail;
+  }
+}
+
 // E-stop and limits in check (--events): a run stopped mid-program passes every rule and
 // ends "stopped" at the press, its last pulse no later, on both archs and with the ramp; a
 // checker told of a stop the engine never got reports the pulses after it and the missing
@@ -222,6 +258,16 @@ TEST(TrajectoryChecker, StopsEndTheRunAtTheirClockAndPulsesAfterOneFailTheStopRu
       EXPECT_EQ(stopped.run.last.error_code, static_cast<uint8_t>(TapeError::kLimitY));
       ASSERT_FALSE(stopped.checker->pulses().empty());
       EXPECT_LE(stopped.checker->pulses().back().cycle, 90001u);
+      // A step output stuck high two clocks after the stop (a fault in the engine): the run
+      // is watched past its end, and the pulse breaks the stop rule, and only it.
+      setup.fault = GoldenInterp::Fault{GoldenInterp::Fault::kStuckStep, 90003, 0};
+      const CheckOutcome stuck = run_check(frames_of(p), nullptr, setup);
+      ASSERT_FALSE(stuck.passed()) << what;
+      for (const Violation& v : stuck.checker->violations()) {
+        EXPECT_EQ(v.rule, Rule::kStop) << what << ": " << v.detail;
+        EXPECT_GT(v.cycle, 90001u) << what;
+      }
+      setup.fault.reset();
       // The engine without the stop, the checker with it.
       InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, accel);
       cfg.arch = arch;

@@ -168,6 +168,60 @@ TEST_P(CosimArch, HoldsAndStartsStayInLockStepAndKeepThePulses) {
   }
 }
 
+// The feed and rapid overrides at random clocks and levels (0 % to 200 %; 25, 50, 100 % for
+// rapids), with holds among them, on a ramped program of lines, arcs and a rapid: lock step
+// on both archs, and the pulses of the run without overrides, in the same order. A run at
+// 50 % takes longer than at 100 %, one at 200 % less where the blocks are below the cap.
+TEST_P(CosimArch, OverridesStayInLockStepAndKeepThePulses) {
+  std::mt19937_64 rng(3304);
+  Options o = at_20khz(GetParam());
+  o.config.accel_step = InterpConfig::accel_step_for(500, 20e3, 3, o.config.feed_modulus);
+  const char* tape =
+      "%\nG17 G21 G91 G93\nN1 G03 X-5.000 Y5.000 I-5.000 J0.000 F60.000\n"
+      "N2 G01 X3.000 Y0.250 F100.000\nN3 G00 X-1.000 Y-7.000\nN4 G01 X-1.500 Y2.250 F80.000\n"
+      "N5 G02 X2.000 Y-2.000 I0.000 J-2.000 F90.000\nN6 G00 X2.000 Y1.000\nM02\n%\n";
+  const std::vector<uint8_t> frames = frames_of(tape);
+  OutputRecorder plain_rec;
+  const Result plain = run(frames, o, plain_rec);
+  ASSERT_FALSE(plain.mismatch) << cosim::describe(*plain.mismatch);
+  ASSERT_EQ(plain.end, Result::End::kDone);
+  for (uint16_t level : {uint16_t{64}, uint16_t{256}}) {
+    Options at = o;
+    at.events = {{1, OperatorEvent::kFeedOverride, level}};
+    OutputRecorder rec;
+    const Result r = run(frames, at, rec);
+    ASSERT_FALSE(r.mismatch) << level << ": " << cosim::describe(*r.mismatch);
+    ASSERT_EQ(r.end, Result::End::kDone) << level;
+    EXPECT_TRUE(same_pulse_order(rec, plain_rec)) << level;
+    if (level < kOverrideOne) EXPECT_GT(r.cycles, plain.cycles + plain.cycles / 2);
+    // The serial arch plays these feeds at its cap (one iteration per serial iteration)
+    // already: 200 % cannot make it faster.
+    else if (GetParam() == Arch::kParallel) EXPECT_LT(r.cycles, plain.cycles);
+    else EXPECT_EQ(r.cycles, plain.cycles);
+  }
+  const uint16_t rapid_levels[] = {32, 64, 128};
+  for (int t = 0; t < 6; ++t) {
+    Options at = o;
+    std::uniform_int_distribution<uint64_t> when(1, plain.cycles);
+    std::uniform_int_distribution<int> level(0, 2 * kOverrideOne);
+    for (int k = 0; k < 6; ++k) {
+      at.events.push_back({when(rng), OperatorEvent::kFeedOverride, static_cast<uint16_t>(level(rng))});
+      at.events.push_back({when(rng), OperatorEvent::kRapidOverride, rapid_levels[rng() % 3]});
+    }
+    if (t % 2) at.events.push_back({when(rng), OperatorEvent::kHold});
+    if (t % 2) at.events.push_back({at.events.back().cycle + 4000, OperatorEvent::kStart});
+    if (t % 3 == 0) at.events.push_back({when(rng), OperatorEvent::kFeedOverride, 0});
+    // The last word is the feed override's: not 0, so that the program ends.
+    at.events.push_back({plain.cycles + 1, OperatorEvent::kFeedOverride, static_cast<uint16_t>(64 + level(rng) / 2)});
+    sort_by_clock(at.events);
+    OutputRecorder rec;
+    const Result r = run(frames, at, rec);
+    ASSERT_FALSE(r.mismatch) << "run " << t << ": " << cosim::describe(*r.mismatch);
+    ASSERT_EQ(r.end, Result::End::kDone) << "run " << t << ": " << events_text(at.events, 20e3);
+    EXPECT_TRUE(same_pulse_order(rec, plain_rec)) << "run " << t;
+  }
+}
+
 // E-stop and the limits at random clocks, after random holds, with and without the ramp:
 // lock step on both archs; the run ends at the stop's clock in the error with the stop's
 // code, naming the block playing; its pulses are the first ones of the run without the
