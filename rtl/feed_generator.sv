@@ -35,7 +35,13 @@
 // Overrides (with the ramp only): the target is min(min(S, cap) P >> OverrideFracBits, cap),
 // P the feed override, or for a rapid traverse (rapid_i at its load) the rapid override,
 // registered. So an override scales the rate the block would play at, and u follows a
-// change of it at du per clock like any other; P = 0 stops the block as a hold does.
+// change of it at du per clock like any other; P = 0 stops the block as a hold does. The
+// product comes from a shift-and-add multiplier, one bit of P per clock (one adder, not a
+// multiplier array of some thousand LUT4s at the default widths): it restarts at each load
+// and each change of P, unless P is 100 %, where the target is min(S, cap) itself; while
+// it runs (OverrideWidth clocks) the target is u, so u holds (from rest, creeps at du)
+// until the new target is there. So a machine at 100 % ramps as without overrides, and a
+// top that ties the overrides to 100 % has no multiplier.
 // Golden twin: the section "Feed generator" of GoldenInterp::tick() and
 // GoldenInterp::ramp_edge() (sc_model/golden/interp_top.h).
 module feed_generator #(
@@ -109,15 +115,21 @@ module feed_generator #(
   logic [RateWidth-1:0]    cap_q, rate_q, rate_d, du, target;
   logic                    capped_q, capped_d, ramp_on, held_q, halt;
   // rapid_q: the block plays at the rapid override. override_q: its P, registered.
-  // scaled: min(S, cap) P; its top bits above cap saturate the target at cap.
-  localparam int OvrWidth = interp_pkg::OverrideWidth;
+  // The multiplier: product_q = (B (P mod 2^i)) >> i after i of its steps, B = base <<
+  // (OvrWidth - OverrideFracBits), base = min(S, cap): after all OvrWidth steps it is
+  // base P >> OverrideFracBits, exact (each step's shift drops only bits below the result).
+  // mul_p_q: the bits of P still to add; mul_left_q: the steps left (0: the product).
+  localparam int OvrWidth  = interp_pkg::OverrideWidth;
+  localparam int OvrShift  = OvrWidth - interp_pkg::OverrideFracBits;
+  localparam int ProdWidth = RateWidth + OvrShift;  // the product < 2B, B < 2^ProdWidth
   logic                    rapid_q;
-  logic [OvrWidth-1:0]     override_q;
+  logic [OvrWidth-1:0]     override_q, override_d, mul_p_q, mul_p_d;
+  logic [$clog2(OvrWidth+1)-1:0] mul_left_q, mul_left_d;
   logic [RateWidth-1:0]    base;
+  logic [ProdWidth-1:0]    product_q, product_d;
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [RateWidth+OvrWidth-1:0] scaled;  // its fraction bits are dropped
+  logic [ProdWidth:0]      mul_sum;  // its bit 0 is shifted out
   /* verilator lint_on UNUSEDSIGNAL */
-  logic [RateWidth+OvrWidth-interp_pkg::OverrideFracBits-1:0] overridden;
   logic [IterWidth-1:0]    slack_it_q, slack_it_d;
   logic [ModulusWidth-1:0] slack_frac_q, slack_frac_d;
   logic [RateWidth:0]      up_rate;                       // u + du
@@ -154,10 +166,27 @@ module feed_generator #(
     // Held or overridden to 0, the target is 0 and u does not start from rest or creep.
     halt       = held_q || override_q == '0;
     base       = capped_q ? cap_q : RateWidth'(run_step_i);
-    scaled     = (RateWidth + OvrWidth)'(base) * (RateWidth + OvrWidth)'(override_q);
-    overridden = scaled[RateWidth+OvrWidth-1:interp_pkg::OverrideFracBits];
-    target     = halt ? '0 : overridden > ($bits(overridden))'(cap_q) ? cap_q
-                                                                     : RateWidth'(overridden);
+    target     = halt ? '0 : override_q == interp_pkg::OverrideOne ? base
+               : mul_left_q != '0 ? rate_q
+               : product_q > ProdWidth'(cap_q) ? cap_q : RateWidth'(product_q);
+    // The multiplier's next step: restart at a load (the new block's base from the next
+    // clock on) or when P changes, to anything but 100 %; else add B if P's next bit is
+    // set, and halve.
+    override_d = !Accel ? '0 : (load_i ? rapid_i : rapid_q) ? rapid_override_i : feed_override_i;
+    mul_sum    = {1'b0, product_q} + (mul_p_q[0] ? (ProdWidth + 1)'(base) << OvrShift : '0);
+    if (Accel && override_d != interp_pkg::OverrideOne && (load_i || override_d != override_q)) begin
+      product_d  = '0;
+      mul_p_d    = override_d;
+      mul_left_d = ($bits(mul_left_q))'(OvrWidth);
+    end else if (mul_left_q != '0) begin
+      product_d  = mul_sum[ProdWidth:1];
+      mul_p_d    = mul_p_q >> 1;
+      mul_left_d = mul_left_q - 1'b1;
+    end else begin
+      product_d  = product_q;
+      mul_p_d    = mul_p_q;
+      mul_left_d = mul_left_q;
+    end
     up_rate  = {1'b0, rate_q} + {1'b0, du};
     stay_sum = (ModulusWidth + 1)'(slack_frac_q) + (ModulusWidth + 1)'(rate_q);
     {stay_borrow, stay_over} = {1'b0, stay_sum} - {2'b0, modulus_q};
@@ -232,7 +261,10 @@ module feed_generator #(
     if (!rst_ni) begin
       held_q       <= 1'b0;
       rapid_q      <= 1'b0;
-      override_q   <= Accel ? OvrWidth'(1) << interp_pkg::OverrideFracBits : '0;
+      override_q   <= Accel ? interp_pkg::OverrideOne : '0;
+      product_q    <= '0;
+      mul_p_q      <= '0;
+      mul_left_q   <= '0;
       phase_q      <= '0;
       saturated_q  <= 1'b0;
       rate_q       <= '0;
@@ -242,8 +274,10 @@ module feed_generator #(
     end else begin
       held_q       <= hold_i || (held_q && !start_i);
       rapid_q      <= load_i ? rapid_i : rapid_q;
-      override_q   <= !Accel ? '0 : (load_i ? rapid_i : rapid_q) ? rapid_override_i
-                                                                 : feed_override_i;
+      override_q   <= override_d;
+      product_q    <= product_d;
+      mul_p_q      <= mul_p_d;
+      mul_left_q   <= mul_left_d;
       phase_q      <= phase_d;
       saturated_q  <= saturated_d;
       rate_q       <= rate_d;

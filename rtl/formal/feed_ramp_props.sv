@@ -23,7 +23,9 @@
 // the DDA: it counts the iterations left and gives run_i.
 // Induction: ai_* state the slack exactly: K = D M - f, with 2 du (left M - phase - K) =
 // u (u + du) (K is the phase to the last strobe less a stop's, B(u) = u (u + du) / (2 du)),
-// u a multiple of du, K > -du; and the phase since the last strobe for ap_gap.
+// u a multiple of du, K > -du; the phase since the last strobe for ap_gap; and the override
+// multiplier's partial product after i steps, (B (P mod 2^i)) >> i with P's bits above i
+// still to add (P not 100 %).
 module feed_ramp_props #(
   parameter int NW = 3,   // N width
   parameter int MW = 6,   // modulus width
@@ -126,12 +128,21 @@ module feed_ramp_props #(
   // formal-tap: tap_capped = u_dut.capped_q
   // formal-tap: tap_held = u_dut.held_q
   // formal-tap: tap_override = u_dut.override_q
+  // formal-tap: tap_mul_left = u_dut.mul_left_q
+  // formal-tap: tap_mul_p = u_dut.mul_p_q
+  // formal-tap: tap_product = u_dut.product_q
+  // formal-tap: tap_base = u_dut.base
   logic [MW:0]        tap_phase;  // PhaseWidth = MW + 1
   logic [MW-CapBits-1:0] tap_rate, tap_cap;
   logic [NW-1:0]      tap_it;
   logic [MW-1:0]      tap_frac, tap_modulus, tap_accel;
   logic               tap_capped, tap_held;
-  logic [interp_pkg::OverrideWidth-1:0] tap_override;
+  localparam int OW = interp_pkg::OverrideWidth;
+  localparam int OvrShift = OW - interp_pkg::OverrideFracBits;
+  logic [OW-1:0] tap_override, tap_mul_p;
+  logic [$clog2(OW+1)-1:0] tap_mul_left;
+  logic [MW-CapBits+OvrShift-1:0] tap_product;
+  logic [MW-CapBits-1:0] tap_base;
 
   // The model's target: S capped, times P, capped; halted (held or P = 0) it is 0.
   localparam int TW = MW + interp_pkg::OverrideWidth + 1;
@@ -183,6 +194,15 @@ module feed_ramp_props #(
         if (f_since_q < (CapBits + 1)'(Gap))
           ai_gap: assert (PW'(tap_phase) < (PW'(f_since_q) + 1'b1) * PW'(f_cap));
       end
+      // The multiplier after i = OW - left steps; its base changes only at a load, which
+      // restarts it (at 100 % it is not used, and not restarted).
+      if (tap_override != interp_pkg::OverrideOne)
+        ai_mul: assert (PW'(tap_mul_left) <= PW'(OW) &&
+                      PW'(tap_mul_p) == (PW'(tap_override) >> (PW'(OW) - PW'(tap_mul_left))) &&
+                      PW'(tap_product) ==
+                        ((PW'(tap_base) << OvrShift) *
+                         (PW'(tap_override) & ((PW'(1) << (PW'(OW) - PW'(tap_mul_left))) - 1'b1)))
+                        >> (PW'(OW) - PW'(tap_mul_left)));
     end
   end
 `endif

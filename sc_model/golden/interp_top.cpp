@@ -54,6 +54,7 @@ void GoldenInterp::reset() {
   rate_ = rate_base_ = rate_target_ = 0;
   rapid_ = false;
   override_ = kOverrideOne;
+  mul_left_ = 0;
   slack_ = 0;
   held_ = false;
   stop_ = 0;
@@ -73,7 +74,8 @@ void GoldenInterp::reset() {
 uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   using State = GoldenTapeDecoder::State;
   if ((in.hold || (held_ && !in.start)) != held_) return 0;  // the hold register changes
-  if (accel_step_ > 0 && override_input(in) != override_) return 0;  // the override changes
+  if (accel_step_ > 0 && (mul_left_ > 0 || override_input(in) != override_))
+    return 0;  // the override's multiplier runs, or the override changes
   if ((in.estop || in.limit_x || in.limit_y) && !out_.done && !out_.error) return 0;  // a stop latches
   if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
   const bool busy = out_.busy;
@@ -162,7 +164,6 @@ void GoldenInterp::load_block() {
     // A ramped block starts from standstill: u = 0, the phase empty, N M phase units to go.
     rate_base_ = b.step_over ? rate_cap_ : std::min(feed_step_, rate_cap_);
     rapid_ = b.motion == static_cast<uint8_t>(tape::Motion::kRapid);
-    rate_target_ = overridden_target();
     rate_ = 0;
     phase_ = 0;
     slack_ = static_cast<__int128>(b.iterations) * modulus_;
@@ -176,15 +177,20 @@ void GoldenInterp::load_block() {
   ++loads_;
 }
 
-// feed_generator.sv's override_q and target: the product's fraction bits dropped.
-void GoldenInterp::override_edge(const InterpInputs& in) {
-  override_ = override_input(in);
-  rate_target_ = overridden_target();
-}
-
-uint64_t GoldenInterp::overridden_target() const {
-  const unsigned __int128 scaled = static_cast<unsigned __int128>(rate_base_) * override_;
-  return static_cast<uint64_t>(std::min<unsigned __int128>(scaled >> kOverrideFracBits, rate_cap_));
+// feed_generator.sv's override_q and its multiplier: a load or a change of P to anything
+// but 100 % restarts it, and kOverrideWidth edges later the target is the product, its
+// fraction bits dropped (the RTL's shifts drop only those), capped. Its partial sums are
+// not visible: only when it ends matters.
+void GoldenInterp::multiplier_edge(const InterpInputs& in, bool load) {
+  const uint16_t p = override_input(in);
+  if (p != kOverrideOne && (load || p != override_)) {
+    mul_left_ = kOverrideWidth;
+    const unsigned __int128 scaled = static_cast<unsigned __int128>(rate_base_) * p;
+    rate_target_ = static_cast<uint64_t>(std::min<unsigned __int128>(scaled >> kOverrideFracBits, rate_cap_));
+  } else if (mul_left_ > 0) {
+    --mul_left_;
+  }
+  override_ = p;
 }
 
 void GoldenInterp::frame_edge(const InterpInputs& in, bool buffer_empty) {

@@ -61,8 +61,8 @@ class GoldenInterp {
  private:
   inline void player_edge(bool strobe);  // the player's DDA at an edge of a playing block
   inline void ramp_edge();               // the rate u for the next clock
-  void override_edge(const InterpInputs& in);  // the override register, and the target
-  uint64_t overridden_target() const;          // min(rate_base_ P / kOverrideOne, rate_cap_)
+  // The override register and its multiplier at an edge (`load`: a block loaded at it).
+  void multiplier_edge(const InterpInputs& in, bool load);
   // The playing block's override P (override_q), from its rapid flag.
   uint16_t override_input(const InterpInputs& in) const {
     return (rapid_ ? in.rapid_override : in.feed_override) & ((1u << kOverrideWidth) - 1);
@@ -113,7 +113,10 @@ class GoldenInterp {
   // rate_target_: rate_base_, the block's S capped at rate_cap_ (u < M / 2 and
   // u 2^lead_bits_ < M: at most one strobe in 2 clocks, or per serial iteration), times the
   // override P (override_, the feed override, or for a rapid_ block the rapid override), in
-  // units of 1 / kOverrideOne, capped again. slack_: K, the phase units to
+  // units of 1 / kOverrideOne, capped again: feed_generator.sv's shift-and-add multiplier
+  // has it mul_left_ edges after its restart (a load, a change of P, unless to 100 %),
+  // and meanwhile the target is u itself; at 100 % the target is rate_base_. slack_: K,
+  // the phase units to
   // the block's last strobe (N M at the load, less each clock's u) less what a stop from u
   // adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block (ramp_edge()
   // brakes in time), so the block ends at u <= du.
@@ -121,6 +124,7 @@ class GoldenInterp {
   uint64_t rate_ = 0, rate_base_ = 0, rate_target_ = 0;
   bool rapid_ = false;
   uint16_t override_ = kOverrideOne;
+  unsigned mul_left_ = 0;
   __int128 slack_ = 0;
   // Feed hold (hold_i until start_i): no strobe without ramps; with them, the target 0.
   bool held_ = false;
@@ -196,7 +200,8 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (!decoder_.quiet(in, buffer_empty)) frame_edge(in, buffer_empty);
   if (cycle_ == fault_cycle_) fault_edge();
   held_ = in.hold || (held_ && !in.start);
-  if (accel_step_ > 0 && override_input(in) != override_) override_edge(in);
+  if (accel_step_ > 0 && (mul_left_ > 0 || load || override_input(in) != override_))
+    multiplier_edge(in, load);
   if (stop_now) stop_edge(in);
 }
 
@@ -213,7 +218,11 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
 // the creep applies: u ramps down to 0 and stays there, and the phase stops.
 inline void GoldenInterp::ramp_edge() {
   const bool halt = halted();
-  const uint64_t u = rate_, du = accel_step_, target = halt ? 0 : rate_target_;
+  const uint64_t u = rate_, du = accel_step_;
+  const uint64_t target = halt                          ? 0
+                          : override_ == kOverrideOne ? rate_base_
+                          : mul_left_ > 0             ? u
+                                                      : rate_target_;
   const __int128 w = static_cast<__int128>(u), up = 2 * w + static_cast<__int128>(du);
   if (u == 0 && !halt ? slack_ > 0 : u + du <= target && slack_ > up) {
     rate_ = u + du;

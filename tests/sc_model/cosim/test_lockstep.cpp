@@ -195,9 +195,10 @@ TEST_P(CosimArch, OverridesStayInLockStepAndKeepThePulses) {
     EXPECT_TRUE(same_pulse_order(rec, plain_rec)) << level;
     if (level < kOverrideOne) EXPECT_GT(r.cycles, plain.cycles + plain.cycles / 2);
     // The serial arch plays these feeds at its cap (one iteration per serial iteration)
-    // already: 200 % cannot make it faster.
+    // already: 200 % cannot make it faster, and each of the 6 blocks waits for the
+    // override's product (kOverrideWidth clocks) before it climbs.
     else if (GetParam() == Arch::kParallel) EXPECT_LT(r.cycles, plain.cycles);
-    else EXPECT_EQ(r.cycles, plain.cycles);
+    else EXPECT_LE(r.cycles, plain.cycles + 6 * kOverrideWidth);
   }
   const uint16_t rapid_levels[] = {32, 64, 128};
   for (int t = 0; t < 6; ++t) {
