@@ -105,7 +105,8 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
     // With ramps only a cruise is quiet: u as close below its target as du allows, and
     // each edge j stays there while K - j u > u.
     if (ramped) {
-      if (halted() || rate_ == 0 || rate_ > rate_target_ || rate_ + accel_step_ <= rate_target_ ||
+      const uint64_t target = ramp_target();
+      if (halted() || rate_ == 0 || rate_ > target || rate_ + accel_step_ <= target ||
           slack_ <= rate_)
         return 0;
       n = std::min(n, static_cast<uint64_t>((slack_ - 1) / static_cast<__int128>(rate_)));

@@ -69,6 +69,13 @@ class GoldenInterp {
   }
   // held_, or (with the ramp) the override at 0: the target is 0, no start from rest.
   bool halted() const { return held_ || override_ == 0; }
+  // The ramp's target u moves toward (feed_generator.sv's target).
+  uint64_t ramp_target() const {
+    return halted()                    ? 0
+           : override_ == kOverrideOne ? rate_base_
+           : mul_left_ > 0             ? rate_
+                                       : rate_target_;
+  }
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
   void status_edge();                       // done / error when the player is empty
@@ -115,10 +122,9 @@ class GoldenInterp {
   // override P (override_, the feed override, or for a rapid_ block the rapid override), in
   // units of 1 / kOverrideOne, capped again: feed_generator.sv's shift-and-add multiplier
   // has it mul_left_ edges after its restart (a load, a change of P, unless to 100 %),
-  // and meanwhile the target is u itself; at 100 % the target is rate_base_. slack_: K,
-  // the phase units to
-  // the block's last strobe (N M at the load, less each clock's u) less what a stop from u
-  // adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block (ramp_edge()
+  // and meanwhile the target is u itself; at 100 % the target is rate_base_
+  // (ramp_target()). slack_: K, the phase units to the block's last strobe (N M at the
+  // load, less each clock's u) less what a stop from u adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block (ramp_edge()
   // brakes in time), so the block ends at u <= du.
   uint64_t accel_step_ = 0, rate_cap_ = 0;
   uint64_t rate_ = 0, rate_base_ = 0, rate_target_ = 0;
@@ -218,11 +224,7 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
 // the creep applies: u ramps down to 0 and stays there, and the phase stops.
 inline void GoldenInterp::ramp_edge() {
   const bool halt = halted();
-  const uint64_t u = rate_, du = accel_step_;
-  const uint64_t target = halt                          ? 0
-                          : override_ == kOverrideOne ? rate_base_
-                          : mul_left_ > 0             ? u
-                                                      : rate_target_;
+  const uint64_t u = rate_, du = accel_step_, target = ramp_target();
   const __int128 w = static_cast<__int128>(u), up = 2 * w + static_cast<__int128>(du);
   if (u == 0 && !halt ? slack_ > 0 : u + du <= target && slack_ > up) {
     rate_ = u + du;

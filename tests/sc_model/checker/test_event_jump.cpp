@@ -52,11 +52,12 @@ tape::Program mixed_program(std::mt19937& rng, bool rapids) {
 
 // Runs jumped and compares with the clocked trace; returns the clocks skipped.
 uint64_t expect_jumped_equals_clocked(const std::vector<uint8_t>& frames, const InterpConfig& cfg,
-                                      uint64_t cpf, const GoldenInterp::Fault* fault) {
-  const std::vector<InterpOutputs> ref = test::golden_trace(frames, cfg, cpf, fault);
+                                      uint64_t cpf, const GoldenInterp::Fault* fault,
+                                      const std::vector<OperatorEvent>& events = {}) {
+  const std::vector<InterpOutputs> ref = test::golden_trace(frames, cfg, cpf, fault, events);
   GoldenInterp dut(cfg);
   if (fault) dut.inject(*fault);
-  FrameSource source(frames, cpf);
+  FrameSource source(frames, cpf, events);
   NoChecker nc;
   std::vector<std::pair<uint64_t, InterpOutputs>> ticked;
   const RunEnd end = run_engine_jumping(dut, source, ref.size() + 100, nc,
@@ -90,10 +91,17 @@ TEST(EventJump, JumpedRunEqualsClockedAtEveryEvent) {
         InterpConfig cfg;
         cfg.arch = serial ? Arch::kSerial : Arch::kParallel;
         cfg.feed_modulus = 60ull * 100000ull * 1000ull;  // a 100 kHz clock: short runs
-        // The last run of each kind ramps (2000 mm/s^2): only its cruises are quiet.
-        if (k == 3) cfg.accel_step = InterpConfig::accel_step_for(2000, 1e5, 3, cfg.feed_modulus);
+        // The last run of each kind ramps (2000 mm/s^2): only its cruises are quiet; the
+        // operator overrides it (slower, back to 100 %, faster, the rapids at 50 %).
+        std::vector<OperatorEvent> events;
+        if (k == 3) {
+          cfg.accel_step = InterpConfig::accel_step_for(2000, 1e5, 3, cfg.feed_modulus);
+          events = {{20000, OperatorEvent::kFeedOverride, 77}, {45000, OperatorEvent::kRapidOverride, 64},
+                    {60000, OperatorEvent::kFeedOverride, kOverrideOne},
+                    {90000, OperatorEvent::kFeedOverride, 200}};
+        }
         const tape::Program p = mixed_program(rng, true);
-        skipped += expect_jumped_equals_clocked(test::frames_of(p), cfg, cpf, nullptr);
+        skipped += expect_jumped_equals_clocked(test::frames_of(p), cfg, cpf, nullptr, events);
         ++cases;
       }
     }
