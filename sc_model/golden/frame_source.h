@@ -1,7 +1,8 @@
 // Tape reader model: delivers a tape's frames to the interpolator over valid/ready at a
 // reader rate, one clock at a time, and with them the operator's presses (feed hold, cycle
-// start, E-stop, limits: operator_events.h) at their clocks and the overrides' levels. Plain C++ so the lock-step cosim and
-// the SystemC tape-reader module use the very same timing.
+// start, E-stop, limits: operator_events.h) at their clocks and the overrides' levels.
+// Plain C++ so the lock-step cosim and the SystemC tape-reader module use the very same
+// timing.
 // Idea: a start/stop reader needs `cycles_per_frame` clocks to bring the next character
 // under the read head; the character stays valid until the decoder takes it (valid and
 // ready at one rising edge). tape_end rises once the last frame has been taken.

@@ -51,7 +51,7 @@ void GoldenInterp::reset() {
   next_taken_cycle_ = words_end_cycle_ = 0;
   feed_step_ = phase_ = 0;
   saturated_ = false;
-  rate_ = rate_base_ = rate_target_ = 0;
+  rate_ = rate_base_ = product_ = 0;
   rapid_ = false;
   override_ = kOverrideOne;
   mul_left_ = 0;
@@ -187,7 +187,7 @@ void GoldenInterp::multiplier_edge(const InterpInputs& in, bool load) {
   if (p != kOverrideOne && (load || p != override_)) {
     mul_left_ = kOverrideWidth;
     const unsigned __int128 scaled = static_cast<unsigned __int128>(rate_base_) * p;
-    rate_target_ = static_cast<uint64_t>(std::min<unsigned __int128>(scaled >> kOverrideFracBits, rate_cap_));
+    product_ = static_cast<uint64_t>(std::min<unsigned __int128>(scaled >> kOverrideFracBits, rate_cap_));
   } else if (mul_left_ > 0) {
     --mul_left_;
   }

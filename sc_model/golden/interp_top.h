@@ -74,7 +74,7 @@ class GoldenInterp {
     return halted()                    ? 0
            : override_ == kOverrideOne ? rate_base_
            : mul_left_ > 0             ? rate_
-                                       : rate_target_;
+                                       : product_;
   }
   void load_block();           // block buffer -> player
   void frame_edge(const InterpInputs& in, bool buffer_empty);  // decoder and buffer
@@ -116,18 +116,18 @@ class GoldenInterp {
   uint64_t phase_ = 0;
   bool saturated_ = false;
   // The ramp (accel_step_ > 0, docs/motion-control.md): the phase grows by rate_ (u, a
-  // multiple of du = accel_step_ from 0), which moves by at most du per clock toward
-  // rate_target_: rate_base_, the block's S capped at rate_cap_ (u < M / 2 and
-  // u 2^lead_bits_ < M: at most one strobe in 2 clocks, or per serial iteration), times the
-  // override P (override_, the feed override, or for a rapid_ block the rapid override), in
-  // units of 1 / kOverrideOne, capped again: feed_generator.sv's shift-and-add multiplier
-  // has it mul_left_ edges after its restart (a load, a change of P, unless to 100 %),
-  // and meanwhile the target is u itself; at 100 % the target is rate_base_
-  // (ramp_target()). slack_: K, the phase units to the block's last strobe (N M at the
-  // load, less each clock's u) less what a stop from u adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block (ramp_edge()
-  // brakes in time), so the block ends at u <= du.
+  // multiple of du = accel_step_ from 0), which moves by at most du per clock toward its
+  // target (ramp_target()): rate_base_, the block's S capped at rate_cap_ (u < M / 2 and
+  // u 2^lead_bits_ < M: at most one strobe in 2 clocks, or per serial iteration), at an
+  // override P of 100 %; at another P (override_, the feed override, or for a rapid_ block
+  // the rapid override, in units of 1 / kOverrideOne) product_, rate_base_ P capped again,
+  // which feed_generator.sv's shift-and-add multiplier has mul_left_ edges after its
+  // restart (a load, a change of P), the target being u meanwhile. slack_: K, the phase
+  // units to the block's last strobe (N M at the load, less each clock's u) less what a
+  // stop from u adds, B(u) = u + (u - du) + ... + du. K stays above -du in a block
+  // (ramp_edge() brakes in time), so the block ends at u <= du.
   uint64_t accel_step_ = 0, rate_cap_ = 0;
-  uint64_t rate_ = 0, rate_base_ = 0, rate_target_ = 0;
+  uint64_t rate_ = 0, rate_base_ = 0, product_ = 0;
   bool rapid_ = false;
   uint16_t override_ = kOverrideOne;
   unsigned mul_left_ = 0;

@@ -26,6 +26,17 @@ CheckerOptions options_for(const InterpConfig& cfg) {
   return co;
 }
 
+// A 1 MHz machine of `arch` with a reader as fast as the clock, ramped at accel_mm_s2 (0:
+// not), as the operator tests play it.
+CheckSetup at_1mhz(Arch arch, double accel_mm_s2) {
+  CheckSetup setup;
+  setup.clock_hz = 1e6;
+  setup.arch = arch;
+  setup.accel_mm_s2 = accel_mm_s2;
+  setup.reader_cps = 1e6;
+  return setup;
+}
+
 std::string first_violation(const TrajectoryChecker& c) {
   if (c.violations().empty()) return "none";
   const Violation& v = c.violations().front();
@@ -86,11 +97,7 @@ TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheSerialPlayer) {
 TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerationRule) {
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(12);
-    CheckSetup setup;
-    setup.clock_hz = 1e6;
-    setup.arch = arch;
-    setup.accel_mm_s2 = 500;
-    setup.reader_cps = 1e6;
+    CheckSetup setup = at_1mhz(arch, 500);
     const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
     for (int prog = 0; prog < 30; ++prog) {
       const tape::Program p = test::random_line_program(rng, 6, prog % 3 == 0 ? 16 : 9, modulus, 100, 300000);
@@ -120,10 +127,7 @@ TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerati
 TEST(TrajectoryChecker, BlocksWithTheSameNRampedOrHeldAreToldApartByTheirPulses) {
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(14);
-    CheckSetup setup;
-    setup.clock_hz = 1e6;
-    setup.arch = arch;
-    setup.reader_cps = 1e6;
+    CheckSetup setup = at_1mhz(arch, 0);
     const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
     tape::Program p = test::random_line_program(rng, 8, 12, modulus, 30000, 60000);
     for (tape::Block& b : p.blocks) b.n = 7;
@@ -155,11 +159,7 @@ TEST(TrajectoryChecker, BlocksWithTheSameNRampedOrHeldAreToldApartByTheirPulses)
 TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(13);
-    CheckSetup setup;
-    setup.clock_hz = 1e6;
-    setup.arch = arch;
-    setup.accel_mm_s2 = 500;
-    setup.reader_cps = 1e6;
+    CheckSetup setup = at_1mhz(arch, 500);
     const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
     const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
     setup.events = {{50000, OperatorEvent::kHold}, {250000, OperatorEvent::kStart}};
@@ -204,11 +204,7 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
 TEST(TrajectoryChecker, OverriddenRunsPassAndAFasterOneFailsTheDurationRuleUntold) {
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(15);
-    CheckSetup setup;
-    setup.clock_hz = 1e6;
-    setup.arch = arch;
-    setup.accel_mm_s2 = 500;
-    setup.reader_cps = 1e6;
+    CheckSetup setup = at_1mhz(arch, 500);
     const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
     const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
     const std::vector<std::vector<OperatorEvent>> lists = {
@@ -242,11 +238,7 @@ TEST(TrajectoryChecker, StopsEndTheRunAtTheirClockAndPulsesAfterOneFailTheStopRu
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     for (double accel : {0.0, 500.0}) {
       std::mt19937 rng(17);
-      CheckSetup setup;
-      setup.clock_hz = 1e6;
-      setup.arch = arch;
-      setup.accel_mm_s2 = accel;
-      setup.reader_cps = 1e6;
+      CheckSetup setup = at_1mhz(arch, accel);
       const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
       const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
       setup.events = {{90001, OperatorEvent::kLimitY}};
