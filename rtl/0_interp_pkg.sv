@@ -54,8 +54,10 @@ package interp_pkg;
   endfunction
   // A G code that states what the interpolator always does (tape_codes.def).
   function automatic logic g_setting(input logic [6:0] code);
-    g_setting = code == 7'd17
+    g_setting = code == 7'd9
+                || code == 7'd17
                 || code == 7'd21
+                || code == 7'd61
                 || code == 7'd91
                 || code == 7'd93;
   endfunction
@@ -63,6 +65,22 @@ package interp_pkg;
   function automatic logic m_end(input logic [6:0] code);
     m_end = code == 7'd2
             || code == 7'd30;
+  endfunction
+  // An M code that pauses the program after its block (tape_codes.def).
+  function automatic logic m_stop(input logic [6:0] code);
+    m_stop = code == 7'd0;
+  endfunction
+  // An M code that pauses it with the optional stop switch on.
+  function automatic logic m_optional_stop(input logic [6:0] code);
+    m_optional_stop = code == 7'd1;
+  endfunction
+  // An M code that switches the tool on as its block starts.
+  function automatic logic m_tool_on(input logic [6:0] code);
+    m_tool_on = code == 7'd3;
+  endfunction
+  // An M code that switches the tool off after its block's motion.
+  function automatic logic m_tool_off(input logic [6:0] code);
+    m_tool_off = code == 7'd5;
   endfunction
 
   // The feed and rapid overrides (feed_override_i, rapid_override_i): a fraction of
@@ -143,7 +161,11 @@ endpackage
 // with `INTERP_BLOCK_T: its widths are the module's IncWidth, SeqWidth, StepWidth, KWidth
 // and IterWidth. Fields, most significant first:
 //   n: N, the sequence number
-//   motion: an interp_pkg::motion_e code
+//   motion: an interp_pkg::motion_e code (G00 for a still block)
+//   stop: M00: pause after the block
+//   optional_stop: M01: pause after it with the optional stop on
+//   tool_on: M03: the tool on as the block starts
+//   tool_off: M05: the tool off after its motion
 //   dx_neg: dx < 0
 //   dx: |dx|
 //   dy_neg: dy < 0
@@ -160,6 +182,10 @@ endpackage
   typedef struct packed { \
     logic [SeqWidth-1:0]                n; \
     logic [interp_pkg::MotionWidth-1:0] motion; \
+    logic                               stop; \
+    logic                               optional_stop; \
+    logic                               tool_on; \
+    logic                               tool_off; \
     logic                               dx_neg; \
     logic [IncWidth-1:0]                dx; \
     logic                               dy_neg; \

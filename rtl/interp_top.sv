@@ -72,6 +72,8 @@ module interp_top #(
   input  logic                    estop_i,
   input  logic                    limit_x_i,
   input  logic                    limit_y_i,
+  // The optional stop switch: on, an M01 block pauses the program as M00 does.
+  input  logic                    optional_stop_i,
   // Tape reader.
   input  logic [7:0]              frame_i,
   input  logic                    frame_valid_i,
@@ -92,7 +94,13 @@ module interp_top #(
   output logic [interp_pkg::ErrCodeWidth-1:0] error_code_o,
   output logic [SeqWidth-1:0]     error_block_o,
   output logic [OffsetWidth-1:0]  error_offset_o,
-  output logic                    feed_saturated_o
+  output logic                    feed_saturated_o,
+  // The tool (spindle, laser, torch, pen): on from the load of an M03 block, off after the
+  // motion of an M05 block, and off for good at the end of the program, a tape error or a
+  // stop. The program paused after an M00 block (or M01 with optional_stop_i) and waits for
+  // start_i.
+  output logic                    tool_o,
+  output logic                    paused_o
 );
 
   localparam int KWidth = $clog2(IncWidth + 1);
@@ -146,6 +154,11 @@ module interp_top #(
   logic [1:0]          stop_q, stop_d;
   logic                stopped;
   assign stopped = stop_q != '0;
+  // The playing block's M word that acts after its motion (latched at its load: the buffer
+  // then holds the next block): M05, M00, M01. tool_q: the tool output. paused_q: the
+  // program waits for cycle start; pause: the playing block ends at this edge with a pause.
+  logic                tool_q, tool_d, paused_q, paused_d, pause;
+  logic                after_tool_off_q, after_stop_q, after_optional_stop_q;
 
   tape_decoder #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
@@ -173,9 +186,11 @@ module interp_top #(
 
   assign next_arc = interp_pkg::motion_is_arc(next_block.motion);
 
-  // A block loads when one waits and the player is idle or finishing the previous block,
-  // unless a stop input has stopped the machine.
-  assign load = next_valid && (!busy_q || finished) && !stopped;
+  // A block loads when one waits and the player is idle or finishing the previous block
+  // (unless that one pauses the program), while the program neither is paused nor has been
+  // stopped by a stop input.
+  assign pause = busy_q && finished && (after_stop_q || (after_optional_stop_q && optional_stop_i));
+  assign load  = next_valid && (!busy_q || (finished && !pause)) && !stopped && !paused_q;
 
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits),
                    .Accel(Accel), .IterWidth(IncWidth + 1))
@@ -272,9 +287,10 @@ module interp_top #(
       busy_d = 1'b0;  // finished with no next block: a gap (or the end)
     end
     // buf_ready: the buffer is empty (with BitSerial, a block just taken is held but not
-    // yet readable: next_valid is still low).
-    error_d = error_q | (dec_err & !busy_q & buf_ready);
-    done_d  = done_q | (dec_end & dec_tape_ended & !busy_q & buf_ready);
+    // yet readable: next_valid is still low). A paused program ends, or reports its tape
+    // error, after cycle start.
+    error_d = error_q | (dec_err & !busy_q & buf_ready & !paused_q);
+    done_d  = done_q | (dec_end & dec_tape_ended & !busy_q & buf_ready & !paused_q);
     // A stop input, while the program runs (not after its end or a tape error): E-stop
     // first, then X, then Y.
     stop_d = stop_q;
@@ -286,6 +302,14 @@ module interp_top #(
     // A stop wins over an end of program raised at the same edge, and none comes after it.
     error_d = error_d | (stop_d != '0);
     done_d  = done_d & (stop_d == '0);
+    // A pause from the edge its block ends at, until a cycle start after it or a stop.
+    paused_d = (pause || (paused_q && !start_i)) && !error_d;
+    // The tool: off after an M05 block's motion, on at an M03 block's load (an M03 loading
+    // as an M05 block ends wins), off when the program stops for any reason.
+    tool_d = tool_q;
+    if (busy_q && finished && after_tool_off_q) tool_d = 1'b0;
+    if (load && next_block.tool_on) tool_d = 1'b1;
+    if (error_d || done_d) tool_d = 1'b0;
   end
 
   always_ff @(posedge clk_i) begin
@@ -295,12 +319,21 @@ module interp_top #(
       done_q    <= 1'b0;
       error_q   <= 1'b0;
       stop_q    <= '0;
+      tool_q    <= 1'b0;
+      paused_q  <= 1'b0;
+      {after_tool_off_q, after_stop_q, after_optional_stop_q} <= '0;
     end else begin
       busy_q    <= busy_d;
       block_n_q <= block_n_d;
       done_q    <= done_d;
       error_q   <= error_d;
       stop_q    <= stop_d;
+      tool_q    <= tool_d;
+      paused_q  <= paused_d;
+      if (load) begin
+        {after_tool_off_q, after_stop_q, after_optional_stop_q} <=
+            {next_block.tool_off, next_block.stop, next_block.optional_stop};
+      end
     end
   end
 
@@ -321,5 +354,19 @@ module interp_top #(
   assign error_block_o    = !error_q ? '0 : stopped ? block_n_q : dec_err_block;
   assign error_offset_o   = error_q && !stopped ? dec_err_offset : '0;
   assign feed_saturated_o = busy_q & saturated;
+  assign tool_o           = tool_q;
+  assign paused_o         = paused_q;
+
+`ifndef SYNTHESIS
+  // Checked at every edge of every verilated run and in the machine's formal proofs: a
+  // paused program has no block in the player (no pulse can come until cycle start), and
+  // the tool is off once the program has stopped or ended.
+  always_ff @(posedge clk_i) begin
+    if (rst_ni) begin
+      a_paused_idle: assert (!paused_q || !busy_q);
+      a_tool_off_when_over: assert (!tool_q || !(error_q || done_q));
+    end
+  end
+`endif
 
 endmodule

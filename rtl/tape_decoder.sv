@@ -8,6 +8,9 @@
 //   - block assembly with error capture (this module, 3.3 and 3.4): the decoder's state,
 //     the words' meaning (G and F are modal), the block's end, the handoff, and the first
 //     error, with its code, the bad block's N (or the previous one) and the frame's offset.
+// A block with an M word that acts (M00, M01, M03, M05: tape_codes.def) and no motion word
+// is a still block, handed over as a G00 of length 0 (its S the rapid step, N = 1), so the
+// player plays it as any block and acts at its start and end; the modal motion stays.
 // A motion block is prepared before it is held: the feed generator's step S is summed here
 // serially, on one register and one adder: a line's S = F << k is F added once, then
 // doubled (S + S) k times; an arc block (G02/G03) is checked and dry-run by arc_prepare.sv
@@ -156,9 +159,13 @@ module tape_decoder #(
   logic [IncWidth:0]    iter_q, iter_d;
   logic                 grow_x_q, grow_x_d, grow_y_q, grow_y_d;
   // Per-block flags: an N word was read; any word was read; the block moves (X/Y/I/J or
-  // a motion G); the block ends the program (M02/M30).
+  // a motion G); the block ends the program (M02/M30); its M word acts: M00 (stop_q), M01,
+  // M03, M05 (the block record's fields of the same names). m_seen: an M word was read.
   logic n_seen_q, n_seen_d, any_word_q, any_word_d;
   logic motion_blk_q, motion_blk_d, end_blk_q, end_blk_d;
+  logic stop_q, stop_d, optional_stop_q, optional_stop_d, tool_on_q, tool_on_d;
+  logic tool_off_q, tool_off_d, m_seen, action_d;
+  assign m_seen = end_blk_q | stop_q | optional_stop_q | tool_on_q | tool_off_q;
 
   // Error capture: the first error found (valid in StError). Its block is n_q: n_d at the
   // error's edge, and no N is committed in StError; its offset is the frame input's
@@ -223,7 +230,8 @@ module tape_decoder #(
   );
 
   assign preparing = state_q == StPrepare;
-  assign in_arc    = CircleMode && preparing && interp_pkg::motion_is_arc(motion_q);
+  assign in_arc    = CircleMode && preparing && motion_blk_q &&
+                     interp_pkg::motion_is_arc(motion_q);
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
@@ -236,7 +244,8 @@ module tape_decoder #(
     // are don't-care ('x): the verilated model skips them (fast) and synthesis folds the 'x
     // away (no gate per next-state bit).
     {state_d, n_d, motion_d, feed_d,
-     n_seen_d, any_word_d, motion_blk_d, end_blk_d, err_code_d, k_d,
+     n_seen_d, any_word_d, motion_blk_d, end_blk_d, stop_d, optional_stop_d, tool_on_d,
+     tool_off_d, action_d, err_code_d, k_d,
      step_d, shifts_d, grow_x_d, grow_y_d, fail, fail_code, fail_back, fail_word, word_ok,
      word_refusal,
      step_over_d, feed_in_d, step_addend, step_carry, step_sum, feed_over,
@@ -252,6 +261,10 @@ module tape_decoder #(
       any_word_d    = any_word_q;
       motion_blk_d  = motion_blk_q;
       end_blk_d     = end_blk_q;
+      stop_d        = stop_q;
+      optional_stop_d = optional_stop_q;
+      tool_on_d     = tool_on_q;
+      tool_off_d    = tool_off_q;
       err_code_d    = err_code_q;
       k_d           = k_q;
       step_d        = step_q;
@@ -310,8 +323,15 @@ module tape_decoder #(
                         word_ok = 1'b0;
                       end
                     end
+                    // One M word per block: each acts at its own point of the block.
                     interp_pkg::ChM: begin
-                      if (interp_pkg::m_end(word_value[6:0])) end_blk_d = 1'b1;
+                      if (m_seen) word_ok = 1'b0;
+                      else if (interp_pkg::m_end(word_value[6:0])) end_blk_d = 1'b1;
+                      else if (interp_pkg::m_stop(word_value[6:0])) stop_d = 1'b1;
+                      else if (interp_pkg::m_optional_stop(word_value[6:0]))
+                        optional_stop_d = 1'b1;
+                      else if (interp_pkg::m_tool_on(word_value[6:0])) tool_on_d = 1'b1;
+                      else if (interp_pkg::m_tool_off(word_value[6:0])) tool_off_d = 1'b1;
                       else word_ok = 1'b0;
                     end
                     // X, Y, I, J load their registers (load_dx ... below).
@@ -337,9 +357,11 @@ module tape_decoder #(
                       any_word_d = 1'b1;
                     end
                   end else if (ch == interp_pkg::ChLf) begin
-                    if (motion_blk_d) begin
-                      // G00 plays at the rapid rate: it needs no F.
-                      if (feed_d == '0 && motion_d != interp_pkg::MotionRapid) begin
+                    action_d = stop_d | optional_stop_d | tool_on_d | tool_off_d;
+                    if (motion_blk_d || action_d) begin
+                      // G00 plays at the rapid rate: it needs no F; nor does a still block.
+                      if (motion_blk_d && feed_d == '0 &&
+                          motion_d != interp_pkg::MotionRapid) begin
                         fail = 1'b1;
                         fail_code = interp_pkg::ErrMissingFeed;
                       end else begin
@@ -383,7 +405,7 @@ module tape_decoder #(
         // The one adder: S + F (a line's first clock, an arc's iterations), S + the rapid
         // step (a rapid traverse's first clock) or S + S (a line's doublings). An addend
         // wider than S over-runs S by itself.
-        rapid       = motion_q == interp_pkg::MotionRapid;
+        rapid       = motion_q == interp_pkg::MotionRapid || !motion_blk_q;  // or still
         step_addend = !in_arc && !feed_in_q ? step_q
                     : rapid ? StepWidth'(rapid_step_i) : StepWidth'(feed_q);
         feed_over   = !in_arc && !feed_in_q ? 1'b0
@@ -437,6 +459,7 @@ module tape_decoder #(
       // (X, Y, I, J in their own always_ff below).
       if (clear_block) begin
         n_seen_d = 1'b0;  any_word_d = 1'b0;  motion_blk_d = 1'b0;  end_blk_d = 1'b0;
+        stop_d = 1'b0;  optional_stop_d = 1'b0;  tool_on_d = 1'b0;  tool_off_d = 1'b0;
       end
 
       if (fail) begin
@@ -510,6 +533,10 @@ module tape_decoder #(
       any_word_q    <= 1'b0;
       motion_blk_q  <= 1'b0;
       end_blk_q     <= 1'b0;
+      stop_q        <= 1'b0;
+      optional_stop_q <= 1'b0;
+      tool_on_q     <= 1'b0;
+      tool_off_q    <= 1'b0;
       err_code_q    <= '0;
     end else if (update) begin
       state_q       <= state_d;
@@ -528,12 +555,20 @@ module tape_decoder #(
       any_word_q    <= any_word_d;
       motion_blk_q  <= motion_blk_d;
       end_blk_q     <= end_blk_d;
+      stop_q        <= stop_d;
+      optional_stop_q <= optional_stop_d;
+      tool_on_q     <= tool_on_d;
+      tool_off_q    <= tool_off_d;
       err_code_q    <= err_code_d;
     end
   end
 
   assign blk_o.n         = n_q;
-  assign blk_o.motion    = motion_q;
+  assign blk_o.motion    = motion_blk_q ? motion_q : interp_pkg::MotionRapid;  // still: G00
+  assign blk_o.stop      = stop_q;
+  assign blk_o.optional_stop = optional_stop_q;
+  assign blk_o.tool_on   = tool_on_q;
+  assign blk_o.tool_off  = tool_off_q;
   assign blk_o.dx        = dx_q;
   assign blk_o.dx_neg    = dx_neg_q;
   assign blk_o.dy        = dy_q;

@@ -23,7 +23,7 @@ module interp_tb #(
   longint      next_frame = 0, countdown = 0, cycles = 0;
   logic [7:0]  frame;
   logic        frame_valid, tape_end, frame_ready;
-  logic        step_x, dir_x, step_y, dir_y, busy, done, error, saturated;
+  logic        step_x, dir_x, step_y, dir_y, busy, done, error, saturated, tool, paused;
   logic [31:0] pos_x, pos_y, error_offset;
   logic [19:0] block_n, error_block;
   logic [3:0]  error_code;
@@ -35,13 +35,14 @@ module interp_tb #(
   interp_top #(.BitSerial(BitSerial)) dut (
     .clk_i(clk), .rst_ni(rst_n), .feed_modulus_i(modulus[47:0]), .rapid_step_i(rapid[47:0]), .accel_step_i(48'd0), .hold_i(1'b0), .start_i(1'b0),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
-    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
+    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
     .frame_i(frame), .frame_valid_i(frame_valid), .tape_end_i(tape_end),
     .frame_ready_o(frame_ready),
     .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y), .dir_y_o(dir_y),
     .pos_x_o(pos_x), .pos_y_o(pos_y), .block_n_o(block_n),
     .busy_o(busy), .done_o(done), .error_o(error), .error_code_o(error_code),
-    .error_block_o(error_block), .error_offset_o(error_offset), .feed_saturated_o(saturated)
+    .error_block_o(error_block), .error_offset_o(error_offset), .feed_saturated_o(saturated),
+    .tool_o(tool), .paused_o(paused)
   );
 
   initial begin

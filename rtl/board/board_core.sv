@@ -88,6 +88,8 @@ module board_core #(
   output logic [SeqWidth-1:0]    obs_error_block_o,
   output logic [OffsetWidth-1:0] obs_error_offset_o,
   output logic        obs_feed_saturated_o,
+  output logic        obs_tool_o,
+  output logic        obs_paused_o,
   output logic [FifoAddrWidth:0] obs_fifo_level_o,
   output logic [7:0]  obs_rx_data_o,
   output logic        obs_rx_valid_o,
@@ -109,6 +111,7 @@ module board_core #(
   logic [OffsetWidth-1:0] i_error_offset;
   logic [SeqWidth-1:0]    i_block_n, i_error_block;
   logic [interp_pkg::ErrCodeWidth-1:0] i_error_code;
+  logic                   i_tool, i_paused;
 
   // tape_end_q: the EOT frame has been read. xoff_q: the host has been asked to stop.
   // cts_n_q: CTS# to the host. board_err_q: board error code.
@@ -151,14 +154,15 @@ module board_core #(
     .clk_i, .rst_ni,
     .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
-    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
+    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
     .frame_ready_o(frame_ready),
     .step_x_o(i_step_x), .dir_x_o(i_dir_x), .step_y_o(i_step_y), .dir_y_o(i_dir_y),
     .pos_x_o(i_pos_x), .pos_y_o(i_pos_y),
     .block_n_o(i_block_n), .busy_o(i_busy), .done_o(i_done), .error_o(i_error),
     .error_code_o(i_error_code), .error_block_o(i_error_block),
-    .error_offset_o(i_error_offset), .feed_saturated_o(i_sat)
+    .error_offset_o(i_error_offset), .feed_saturated_o(i_sat), .tool_o(i_tool),
+    .paused_o(i_paused)
   );
 
   step_stretcher #(.CountWidth(StretchWidth)) u_stretch_x (
@@ -234,6 +238,8 @@ module board_core #(
   assign obs_error_block_o    = i_error_block;
   assign obs_error_offset_o   = i_error_offset;
   assign obs_feed_saturated_o = i_sat;
+  assign obs_tool_o           = i_tool;
+  assign obs_paused_o         = i_paused;
   assign obs_fifo_level_o     = level;
   assign obs_rx_data_o        = rx_data;
   assign obs_rx_valid_o       = rx_valid;

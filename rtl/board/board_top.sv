@@ -93,7 +93,8 @@ module board_top #(
     .obs_frame_ready_o(), .obs_step_x_o(), .obs_dir_x_o(), .obs_step_y_o(), .obs_dir_y_o(),
     .obs_pos_x_o(), .obs_pos_y_o(), .obs_block_n_o(), .obs_busy_o(), .obs_done_o(),
     .obs_error_o(), .obs_error_code_o(), .obs_error_block_o(), .obs_error_offset_o(),
-    .obs_feed_saturated_o(), .obs_fifo_level_o(), .obs_rx_data_o(), .obs_rx_valid_o(), .board_error_code_o()
+    .obs_feed_saturated_o(), .obs_tool_o(), .obs_paused_o(), .obs_fifo_level_o(), .obs_rx_data_o(),
+    .obs_rx_valid_o(), .board_error_code_o()
   );
   /* verilator lint_on PINCONNECTEMPTY */
 

@@ -52,6 +52,9 @@ module interp_top_props #(
 );
 
   logic          frame_ready, step_x, dir_x, step_y, dir_y, busy, done, error, saturated;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic          tool, paused;  // the M words' outputs: interp_top's own assertions
+  /* verilator lint_on UNUSEDSIGNAL */
   logic [PW-1:0] pos_x, pos_y;
   logic [NW-1:0] block_n, error_block;
   logic [interp_pkg::ErrCodeWidth-1:0] error_code;
@@ -63,11 +66,13 @@ module interp_top_props #(
   ) u_dut (
     .clk_i, .rst_ni, .feed_modulus_i, .rapid_step_i, .accel_step_i(MW'(0)), .hold_i(1'b0), .start_i(1'b0),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
-    .estop_i, .limit_x_i, .limit_y_i, .frame_i, .frame_valid_i, .tape_end_i,
+    .estop_i, .limit_x_i, .limit_y_i, .optional_stop_i(1'b0), .frame_i, .frame_valid_i,
+    .tape_end_i,
     .frame_ready_o(frame_ready), .step_x_o(step_x), .dir_x_o(dir_x), .step_y_o(step_y),
     .dir_y_o(dir_y), .pos_x_o(pos_x), .pos_y_o(pos_y), .block_n_o(block_n), .busy_o(busy),
     .done_o(done), .error_o(error), .error_code_o(error_code), .error_block_o(error_block),
-    .error_offset_o(error_offset), .feed_saturated_o(saturated)
+    .error_offset_o(error_offset), .feed_saturated_o(saturated), .tool_o(tool),
+    .paused_o(paused)
   );
 
   // formal-tap: tap_dec_valid = u_dut.dec_valid

@@ -58,7 +58,7 @@ module interp_ice40_top #(
   logic [15:0]         pos_x, pos_y;
   logic [SeqWidth-1:0] block_n, error_block;
   logic [15:0]         error_offset;
-  logic                feed_saturated;
+  logic                feed_saturated, tool, paused;
   /* verilator lint_on UNUSEDSIGNAL */
 
   interp_top #(
@@ -70,13 +70,13 @@ module interp_ice40_top #(
     .feed_modulus_i(ModulusWidth'(FeedModulus)), .rapid_step_i(ModulusWidth'(RapidStep)),
     .accel_step_i(ModulusWidth'(AccelStep)), .hold_i(1'b0), .start_i(1'b0),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
-    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
+    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .pos_x_o(pos_x), .pos_y_o(pos_y),
     .block_n_o(block_n), .busy_o, .done_o, .error_o, .error_code_o,
     .error_block_o(error_block), .error_offset_o(error_offset),
-    .feed_saturated_o(feed_saturated)
+    .feed_saturated_o(feed_saturated), .tool_o(tool), .paused_o(paused)
   );
 
 endmodule

@@ -88,7 +88,7 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["cutter_radius_mm"] = ctx.setup.cutter_radius_mm;
   if (ctx.setup.cutter_radius_mm > 0) j["cutter_side"] = ctx.setup.cutter_left ? "left" : "right";
   j["tape_start"] = f.xy({0, 0});
-  j["status"] = !o.passed() ? "fail" : c.stopped() ? "stopped" : "pass";
+  j["status"] = !o.passed() ? "fail" : c.stopped() ? "stopped" : c.paused() ? "paused" : "pass";
   j["blocks"] = c.blocks().size();
   j["cycles"] = c.cycles();
   j["cycle_seconds"] = static_cast<double>(c.cycles()) / ctx.setup.clock_hz;
@@ -233,8 +233,14 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
       << fmt("%.6g", c.cycles() / ctx.setup.clock_hz) << " s in block N" << o.run.last.error_block
       << ": stopped at (" << fmt("%.3f", (f.start.x + c.position().x) * o.blu_mm) << ", "
       << fmt("%.3f", (f.start.y + c.position().y) * o.blu_mm) << ") mm\n";
+  if (c.paused())
+    s << "  paused after block N" << o.run.last.block_n << " at "
+      << fmt("%.6g", c.cycles() / ctx.setup.clock_hz)
+      << " s (M00, or M01 with the optional stop on); no cycle start comes (--events start@Ts)\n";
   if (c.violation_count() == 0) {
-    s << (c.stopped() ? "  every pulse rule holds up to the stop; STOPPED\n" : "  every pulse rule holds; PASS\n");
+    s << (c.stopped()  ? "  every pulse rule holds up to the stop; STOPPED\n"
+          : c.paused() ? "  every pulse rule holds up to the pause; PAUSED\n"
+                       : "  every pulse rule holds; PASS\n");
   } else {
     std::vector<Violation> sorted = c.violations();
     std::stable_sort(sorted.begin(), sorted.end(),

@@ -140,7 +140,8 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   co.keep_pulses = setup.keep_pulses;
   const uint64_t cpf = FrameSource::cycles_per_frame_for(setup.clock_hz, setup.reader_cps);
   const uint64_t budget =
-      setup.max_cycles ? setup.max_cycles : cycle_budget(blocks, frames.size(), cpf, cfg);
+      setup.max_cycles ? setup.max_cycles
+                       : cycle_budget(blocks, frames.size(), cpf, cfg) + last_event_cycle(setup.events);
   out.checker = std::make_unique<TrajectoryChecker>(std::move(blocks), out.reference.get(), co);
 
   TrajectoryChecker& checker = *out.checker;

@@ -2,7 +2,8 @@
 // every clock to an observer (the checker).
 // Idea: the golden model and the verilated RTL harness have the same reset()/tick()/
 // outputs() shape, so one template drives either, with no SystemC and no virtual call on
-// the per-clock path. The run stops at done, at error, or at max_cycles.
+// the per-clock path. The run stops at done, at error, at a pause no press resumes
+// (FrameSource::run_over), or at max_cycles.
 // No output struct is copied per clock: the golden model's is observed in place, and the
 // verilated model's ports are read field by field into one struct (read_outputs). A copy
 // of the whole struct right after its fields were stored one by one stalls on store
@@ -23,8 +24,8 @@ namespace ncinterp::checker {
 
 struct RunEnd {
   uint64_t cycles = 0;
-  InterpOutputs last;  // the outputs after the last clock run: done, error, or neither
-                       // (max_cycles reached first)
+  InterpOutputs last;  // the outputs after the last clock run: done, error, paused, or
+                       // none of them (max_cycles reached first)
 };
 
 // The engine's outputs after its last clock: the golden model's in place; the verilated
@@ -46,7 +47,7 @@ RunEnd run_engine(Engine& engine, FrameSource& source, uint64_t max_cycles, Obse
   const InterpOutputs* last = &current_outputs(engine, read);
   observe(uint64_t{0}, *last);
   RunEnd end;
-  for (uint64_t cycle = 1; cycle <= max_cycles && !last->done && !last->error; ++cycle) {
+  for (uint64_t cycle = 1; cycle <= max_cycles && !source.run_over(*last); ++cycle) {
     const bool ready = last->frame_ready;
     engine.tick(source.inputs());
     source.clock(ready);
@@ -85,7 +86,7 @@ RunEnd run_engine_jumping(Golden& engine, FrameSource& source, uint64_t max_cycl
   const InterpOutputs* last = &engine.outputs();
   observe(uint64_t{0}, *last);
   RunEnd end;
-  for (uint64_t cycle = 1; cycle <= max_cycles && !last->done && !last->error;) {
+  for (uint64_t cycle = 1; cycle <= max_cycles && !source.run_over(*last);) {
     const InterpInputs in = source.inputs();
     uint64_t n = engine.quiet_ticks(in);
     if (n > 0) {

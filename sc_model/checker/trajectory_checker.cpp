@@ -462,6 +462,8 @@ void TrajectoryChecker::finish(const InterpOutputs& o) {
            "the interpolator stopped on an error: block N" + std::to_string(o.error_block) +
                ", offset " + std::to_string(o.error_offset) + ": " +
                tape_error_message(static_cast<TapeError>(o.error_code)));
+  } else if (o.paused) {
+    paused_ = true;  // every rule held up to the pause; no cycle start comes to resume it
   } else if (!o.done || loaded_ < blocks_.size()) {
     report(Rule::kComplete, last_cycle_,
            std::to_string(loaded_) + " of " + std::to_string(blocks_.size()) +

@@ -196,6 +196,8 @@ class TrajectoryChecker {
   // The run ended on its stop (CheckerOptions::stop_cycle) as the stop rule asks; the
   // machine stood at position() from then on.
   bool stopped() const { return stopped_; }
+  // The run ended paused (M00, or M01 with the switch on) with no cycle start to come.
+  bool paused() const { return paused_; }
   uint64_t cycles() const { return last_cycle_; }
   uint64_t gap_clocks() const { return gap_clocks_; }
 
@@ -240,7 +242,7 @@ class TrajectoryChecker {
   bool expected_dir_[2] = {true, true};
   bool load_known_ = true;       // see start_block
   std::vector<HoldStop> hold_stops_;
-  bool stopped_ = false;
+  bool stopped_ = false, paused_ = false;
   LineSchedule schedule_;
   // A straight block's feed step S and its schedule (line_schedule.h) on this machine.
   unsigned __int128 step_of(const ProgrammedBlock& b) const;

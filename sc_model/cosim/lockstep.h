@@ -45,7 +45,8 @@ struct Stats {
 };
 
 struct Result {
-  enum class End { kDone, kTapeError, kMismatch, kCycleLimit };
+  // kPaused: at an M00 (or M01 with the optional stop on) that no cycle start press resumes.
+  enum class End { kDone, kTapeError, kMismatch, kCycleLimit, kPaused };
   End end = End::kCycleLimit;
   uint64_t cycles = 0;              // clocks simulated
   std::optional<Mismatch> mismatch;

@@ -47,6 +47,10 @@ Result run_lockstep_on(Rtl& rtl, const std::vector<uint8_t>& frames, const Optio
         result.end = g.done ? Result::End::kDone : Result::End::kTapeError;
         break;
       }
+      if (g.paused && golden_source.run_over(g)) {  // no cycle start comes
+        result.end = Result::End::kPaused;
+        break;
+      }
       if (cycle >= options.max_cycles) {
         result.end = Result::End::kCycleLimit;
         break;

@@ -85,6 +85,7 @@ class VerilatedInterp {
     m.estop_i = in.estop;
     m.limit_x_i = in.limit_x;
     m.limit_y_i = in.limit_y;
+    m.optional_stop_i = in.optional_stop;
     clock(dump);
   }
   void tick(const InterpInputs& in) { tick(in, [](int) {}); }

@@ -40,6 +40,7 @@ class FrameSource {
     in.tape_end = next_ >= frames_.size();
     in.feed_override = feed_override_;
     in.rapid_override = rapid_override_;
+    in.optional_stop = optional_stop_;
     for (size_t k = next_event_; k < events_.size() && events_[k].cycle == clocks_ + 1; ++k)
       press(in, events_[k]);
     return in;
@@ -52,6 +53,7 @@ class FrameSource {
       const OperatorEvent& e = events_[next_event_];
       if (e.kind == OperatorEvent::kFeedOverride) feed_override_ = e.value;
       if (e.kind == OperatorEvent::kRapidOverride) rapid_override_ = e.value;
+      if (e.kind == OperatorEvent::kOptionalStop) optional_stop_ = e.value != 0;
     }
     if (next_ >= frames_.size()) return;
     if (countdown_ > 0) {
@@ -79,11 +81,22 @@ class FrameSource {
   uint64_t frames_taken() const { return next_; }
   const std::vector<uint8_t>& frames() const { return frames_; }
 
+  // The run is over after outputs `o`: the program ended or stopped on an error, or it is
+  // paused (M00, M01) and no cycle start press is still to come.
+  bool run_over(const InterpOutputs& o) const {
+    if (o.done || o.error) return true;
+    if (!o.paused) return false;
+    for (size_t k = next_event_; k < events_.size(); ++k)
+      if (events_[k].kind == OperatorEvent::kStart) return false;
+    return true;
+  }
+
  private:
   std::vector<uint8_t> frames_;
   std::vector<OperatorEvent> events_;  // sorted by cycle
   size_t next_event_ = 0;              // the first not yet past
   uint16_t feed_override_ = kOverrideOne, rapid_override_ = kOverrideOne;  // the levels set
+  bool optional_stop_ = false;  // the optional stop switch
   uint64_t clocks_ = 0;                // edges so far: the current clock is clocks_ + 1
   uint64_t cycles_per_frame_;
   uint64_t next_ = 0;      // index of the frame under the read head

@@ -152,6 +152,8 @@ struct InterpInputs {
   bool estop = false;
   bool limit_x = false;
   bool limit_y = false;
+  // The optional stop switch (optional_stop_i): on, an M01 block pauses as M00 does.
+  bool optional_stop = false;
 };
 
 // What each kind of output (interp_outputs.def) is in C++:

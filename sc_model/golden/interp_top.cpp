@@ -58,6 +58,7 @@ void GoldenInterp::reset() {
   slack_ = 0;
   held_ = false;
   stop_ = 0;
+  after_tool_off_ = after_stop_ = after_optional_stop_ = false;
   dir_[0] = dir_[1] = false;
   circle_ = CircleDda{};
   serial_ = SerialDda(cfg_.inc_width);
@@ -77,13 +78,14 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   if (accel_step_ > 0 && (mul_left_ > 0 || override_input(in) != override_))
     return 0;  // the override's multiplier runs, or the override changes
   if ((in.estop || in.limit_x || in.limit_y) && !out_.done && !out_.error) return 0;  // a stop latches
+  if (out_.paused && in.start) return 0;  // cycle start ends the pause
   if (out_.step_x || out_.step_y) return 0;  // the next edge clears them
   const bool busy = out_.busy;
   const bool buffer_empty = !next_valid_;
   if (busy && player_done_) return 0;       // the block ends: a load, or busy falls
   if (!busy && !buffer_empty) return 0;     // a load (or the RAM read before it)
   const State dstate = decoder_.state();
-  if (!busy && buffer_empty &&
+  if (!busy && buffer_empty && !out_.paused &&
       ((dstate == State::kError && !out_.error) ||
        (dstate == State::kEnd && decoder_.tape_ended() && !out_.done && stop_ == 0)))
     return 0;                               // status_edge() raises error or done
@@ -169,6 +171,9 @@ void GoldenInterp::load_block() {
     phase_ = 0;
     slack_ = static_cast<__int128>(b.iterations) * modulus_;
   }
+  after_tool_off_ = b.tool_off;
+  after_stop_ = b.stop;
+  after_optional_stop_ = b.optional_stop;
   next_valid_ = false;
   out_.dir_x = dir_[0];
   out_.dir_y = dir_[1];

@@ -137,6 +137,10 @@ class GoldenInterp {
   // The stop that stopped the machine (interp_top's stop_q): 0 none, 1 E-stop, 2 X limit,
   // 3 Y limit. Stopped, no block loads and no iteration starts.
   uint8_t stop_ = 0;
+  // The playing block's M word that acts after its motion (interp_top.sv's after_*_q,
+  // latched at its load): M05, M00, M01. The tool and the pause are out_.tool and
+  // out_.paused.
+  bool after_tool_off_ = false, after_stop_ = false, after_optional_stop_ = false;
   bool dir_[2] = {false, false};
   // The player's DDA: CircleDda, or in the serial arch SerialDda. player_done_ and
   // player_running_ are its done() and (SerialDda) an iteration's passes running, kept
@@ -171,9 +175,17 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   // A stop input latches while the program runs (a stop has raised error already).
   const bool stop_now = (in.estop || in.limit_x || in.limit_y) && !out_.done && !out_.error;
   const bool stopped = stop_ != 0;
-  if (!busy && buffer_empty && (dstate == State::kError || dstate == State::kEnd))
+  const bool paused = out_.paused;
+  if (!busy && buffer_empty && !paused && (dstate == State::kError || dstate == State::kEnd))
     status_edge();
-  const bool load = !buffer_empty && (!busy || finishing) && next_readable() && !stopped;
+  // The playing block ends with a pause (M00, or M01 with the switch on): none loads.
+  const bool pause =
+      finishing && (after_stop_ || (after_optional_stop_ && in.optional_stop));
+  const bool load = !buffer_empty && (!busy || (finishing && !pause)) && next_readable() &&
+                    !stopped && !paused;
+  // The tool: off after an M05 block's motion, on at an M03 block's load (which wins).
+  bool tool = out_.tool && !(finishing && after_tool_off_);
+  if (load && next_.tool_on) tool = true;
 
   out_.step_x = false;
   out_.step_y = false;
@@ -209,6 +221,10 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (accel_step_ > 0 && (mul_left_ > 0 || load || override_input(in) != override_))
     multiplier_edge(in, load);
   if (stop_now) stop_edge(in);
+  // The pause until cycle start, and the tool, end with the program (a stop, an error, or
+  // its end).
+  out_.paused = (pause || (paused && !in.start)) && !out_.error;
+  out_.tool = tool && !out_.error && !out_.done;
 }
 
 // The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the

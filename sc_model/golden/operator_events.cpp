@@ -14,7 +14,7 @@ namespace {
 
 // The names of --events and their presses; "resume" is cycle start's other name (events_text()
 // writes the first name of a kind).
-// An override's name is followed by =P.
+// An override's name is followed by =P, the optional stop switch's by =on or =off.
 struct EventName {
   const char* name;
   OperatorEvent::Kind kind;
@@ -23,9 +23,11 @@ constexpr EventName kEventNames[] = {
     {"hold", OperatorEvent::kHold},    {"start", OperatorEvent::kStart},    {"resume", OperatorEvent::kStart},
     {"estop", OperatorEvent::kEStop},  {"limit-x", OperatorEvent::kLimitX}, {"limit-y", OperatorEvent::kLimitY},
     {"override", OperatorEvent::kFeedOverride}, {"rapid-override", OperatorEvent::kRapidOverride},
+    {"optional-stop", OperatorEvent::kOptionalStop},
 };
 constexpr const char* kNameList =
-    "hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y";
+    "hold, resume, start, override=P, rapid-override=P, estop, limit-x, limit-y, "
+    "optional-stop=on|off";
 
 bool is_override(OperatorEvent::Kind kind) {
   return kind == OperatorEvent::kFeedOverride || kind == OperatorEvent::kRapidOverride;
@@ -41,6 +43,19 @@ uint16_t parse_override(OperatorEvent::Kind kind, const std::string& percent, co
   if (kind == OperatorEvent::kRapidOverride && p != 25 && p != 50 && p != 100)
     throw bad("needs 25, 50 or 100 after = (the rapid override's steps, ISO's and grbl's)");
   return static_cast<uint16_t>(std::llround(p * kOverrideOne / 100));
+}
+
+// The kinds that set a level (=value) rather than press a button.
+bool has_value(OperatorEvent::Kind kind) {
+  return is_override(kind) || kind == OperatorEvent::kOptionalStop;
+}
+
+// The value after '=' of a level's name; `bad` builds the error.
+template <class Bad>
+uint16_t parse_value(OperatorEvent::Kind kind, const std::string& value, const Bad& bad) {
+  if (kind != OperatorEvent::kOptionalStop) return parse_override(kind, value, bad);
+  if (value != "on" && value != "off") throw bad("needs =on or =off (the optional stop switch)");
+  return value == "on";
 }
 
 }  // namespace
@@ -66,11 +81,12 @@ std::vector<OperatorEvent> parse_events(const std::string& list, double clock_hz
     const auto known = std::find_if(std::begin(kEventNames), std::end(kEventNames),
                                     [&](const EventName& n) { return name == n.name; });
     if (known == std::end(kEventNames)) throw bad(std::string("is not an event (") + kNameList + ")");
-    if (is_override(known->kind) != (eq != std::string::npos))
-      throw bad(is_override(known->kind) ? "needs =P, a percentage (e.g. override=50@1.5s)"
-                                         : "takes no =value");
+    if (has_value(known->kind) != (eq != std::string::npos))
+      throw bad(known->kind == OperatorEvent::kOptionalStop ? "needs =on or =off (optional-stop=on@0s)"
+                : is_override(known->kind) ? "needs =P, a percentage (e.g. override=50@1.5s)"
+                                           : "takes no =value");
     const uint16_t value =
-        is_override(known->kind) ? parse_override(known->kind, word.substr(eq + 1), bad) : 0;
+        has_value(known->kind) ? parse_value(known->kind, word.substr(eq + 1), bad) : 0;
     events.push_back({static_cast<uint64_t>(std::llround(t * clock_hz)) + 1, known->kind, value});
     pos = end + 1;
   }
@@ -90,6 +106,7 @@ std::string events_text(const std::vector<OperatorEvent>& events, double clock_h
                                     [&](const EventName& n) { return n.kind == e.kind; });
     char value[64] = "", at[64];
     if (is_override(e.kind)) std::snprintf(value, sizeof value, "=%.17g", override_percent(e.value));
+    if (e.kind == OperatorEvent::kOptionalStop) std::snprintf(value, sizeof value, e.value ? "=on" : "=off");
     std::snprintf(at, sizeof at, "@%.17gs", static_cast<double>(e.cycle - 1) / clock_hz);
     text += (text.empty() ? "" : ",") + std::string(named->name) + value + at;
   }

@@ -265,13 +265,22 @@ bool GoldenTapeDecoder::commit_word(Word w) {
         return false;
       }
       break;
-    case Word::kM:
-      if (tape::code_kind('M', num_) != tape::CodeKind::kEnd) {
+    case Word::kM: {
+      // One M word per block: each acts at its own point of the block.
+      const bool m_seen = end_block_ || block_.stop || block_.optional_stop || block_.tool_on ||
+                          block_.tool_off;
+      const tape::CodeKind kind = tape::code_kind('M', num_);
+      if (!m_seen && kind == tape::CodeKind::kEnd) end_block_ = true;
+      else if (!m_seen && kind == tape::CodeKind::kStop) block_.stop = true;
+      else if (!m_seen && kind == tape::CodeKind::kOptionalStop) block_.optional_stop = true;
+      else if (!m_seen && kind == tape::CodeKind::kToolOn) block_.tool_on = true;
+      else if (!m_seen && kind == tape::CodeKind::kToolOff) block_.tool_off = true;
+      else {
         fail(TapeError::kUnsupportedCode, word_offset_);
         return false;
       }
-      end_block_ = true;
       break;
+    }
     case Word::kX: block_.dx = value32; block_.dx_neg = neg_; motion_block_ = true; break;
     case Word::kY: block_.dy = value32; block_.dy_neg = neg_; motion_block_ = true; break;
     case Word::kI: block_.i = value32; block_.i_neg = neg_; motion_block_ = true; break;
@@ -283,17 +292,19 @@ bool GoldenTapeDecoder::commit_word(Word w) {
 }
 
 void GoldenTapeDecoder::end_of_block(uint32_t offset) {
-  if (motion_block_) {
-    if (block_.feed == 0 && !block_.is_rapid()) return fail(TapeError::kMissingFeed, offset);
+  const bool action = block_.stop || block_.optional_stop || block_.tool_on || block_.tool_off;
+  if (motion_block_ || action) {
+    if (motion_block_ && block_.feed == 0 && !block_.is_rapid())
+      return fail(TapeError::kMissingFeed, offset);
     // Prepared first (cleared at the handoff): S starts at 0; a line adds F, then doubles
-    // it k times (k = bit length of max(|dx|, |dy|)); a rapid traverse adds the rapid step
-    // once, its S whatever its length.
+    // it k times (k = bit length of max(|dx|, |dy|)); a rapid traverse, or a still block,
+    // adds the rapid step once, its S whatever its length.
     const uint32_t d = block_.dx | block_.dy;
-    shifts_ = block_.is_rapid() ? 0u : bit_length(d);
+    shifts_ = prepared_rapid() ? 0u : bit_length(d);
     block_.step = 0;
     block_.step_over = false;
     block_.iterations = 0;
-    feed_in_ = !block_.is_arc();
+    feed_in_ = !prepared_arc();
     state_ = State::kPrepare;
     return;
   }
@@ -311,10 +322,10 @@ void GoldenTapeDecoder::add_to_step(uint64_t addend, bool addend_over) {
 }
 
 void GoldenTapeDecoder::prepare_edge() {
-  if (!block_.is_arc()) {  // a line: S = F << k: F at the first clock, then one doubling per
-                           // clock; a rapid traverse: the rapid step, no doubling
+  if (!prepared_arc()) {  // a line: S = F << k: F at the first clock, then one doubling per
+                          // clock; a rapid traverse (or a still block): the rapid step
     if (feed_in_) {
-      const uint64_t f = block_.is_rapid() ? rapid_step_ : block_.feed;
+      const uint64_t f = prepared_rapid() ? rapid_step_ : block_.feed;
       add_to_step(f, f > step_mask_);
       block_.iterations = uint64_t{1} << bit_length(block_.dx | block_.dy);  // with k
       feed_in_ = false;
@@ -346,6 +357,7 @@ void GoldenTapeDecoder::handoff() {
 
 void GoldenTapeDecoder::clear_block() {
   n_seen_ = any_word_ = motion_block_ = end_block_ = false;
+  block_.stop = block_.optional_stop = block_.tool_on = block_.tool_off = false;
   block_.dx = block_.dy = block_.i = block_.j = 0;
   block_.dx_neg = block_.dy_neg = block_.i_neg = block_.j_neg = false;
 }

@@ -32,6 +32,8 @@ struct DecodedBlock {
   // N, the block's DDA iterations (2^k for a line, the dry run's count for an arc): the
   // feed generator's ramp (GoldenInterp, docs/motion-control.md) brakes within them.
   uint64_t iterations = 0;
+  // The block's M word that acts (block_record.def; at most one): M00, M01, M03, M05.
+  bool stop = false, optional_stop = false, tool_on = false, tool_off = false;
 
   bool is_arc() const { return tape::is_arc(static_cast<tape::Motion>(motion)); }
   bool is_rapid() const { return motion == static_cast<uint8_t>(tape::Motion::kRapid); }
@@ -69,7 +71,12 @@ class GoldenTapeDecoder {
   State state() const { return state_; }
   bool ready() const { return ready_; }
   bool tape_ended() const { return tape_end_q_; }
-  const DecodedBlock& block() const { return block_; }
+  // The held block as handed over: a still block (an M word, no motion word) is a G00.
+  DecodedBlock block() const {
+    DecodedBlock b = block_;
+    if (!motion_block_) b.motion = static_cast<uint8_t>(tape::Motion::kRapid);
+    return b;
+  }
   TapeError error_code() const { return err_code_; }
   uint32_t error_block() const { return err_block_; }
   uint32_t error_offset() const { return err_offset_; }
@@ -95,6 +102,9 @@ class GoldenTapeDecoder {
   bool commit_word(Word w);
   void end_of_block(uint32_t offset);
   void prepare_edge();
+  // The block being prepared plays as a traverse (a G00, or a still block), or an arc.
+  bool prepared_rapid() const { return block_.is_rapid() || !motion_block_; }
+  bool prepared_arc() const { return motion_block_ && block_.is_arc(); }
   void add_to_step(uint64_t addend, bool addend_over);
   void handoff();
   void clear_block();
@@ -131,7 +141,8 @@ class GoldenTapeDecoder {
   // whether the number went over its word's limit (an error at the pass's last edge).
   unsigned digit_pass_ = 0;
   bool digit_over_ = false;
-  // Block assembly (n, motion and feed are modal: never cleared at a block start).
+  // Block assembly (n, motion and feed are modal: never cleared at a block start; a still
+  // block keeps the modal motion here, block() hands it over as a G00).
   DecodedBlock block_;
   bool n_seen_ = false, any_word_ = false, motion_block_ = false, end_block_ = false;
   // The block being prepared (kPrepare): a line's F still to add and doublings still to do

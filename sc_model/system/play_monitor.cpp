@@ -73,9 +73,12 @@ void PlayMonitor::observe(uint64_t cycle, const InterpOutputs& o) {
   if (o.busy) {
     ++s_.busy_cycles;
     if (o.feed_saturated && !s_.timeline.empty()) s_.timeline.back().saturated = true;
+  } else if (o.paused) {
+    ++s_.paused_cycles;
   } else if (!o.done && !o.error) {
     ++(started_ ? s_.gap_cycles : s_.lead_in_cycles);
   }
+  if (o.tool) ++s_.tool_on_cycles;
   if (o.step_x || o.step_y) {
     if (o.step_x) ++(o.dir_x ? s_.pulses_x.plus : s_.pulses_x.minus);
     if (o.step_y) ++(o.dir_y ? s_.pulses_y.plus : s_.pulses_y.minus);
@@ -91,8 +94,11 @@ void PlayMonitor::observe_quiet(uint64_t cycle, const InterpOutputs& o) {
   s_.cycles = cycle;
   if (o.busy)
     s_.busy_cycles += n;
+  else if (o.paused)
+    s_.paused_cycles += n;
   else if (!o.done && !o.error)
     (started_ ? s_.gap_cycles : s_.lead_in_cycles) += n;
+  if (o.tool) s_.tool_on_cycles += n;
 }
 
 void PlayMonitor::pulse(int64_t x, int64_t y) {
@@ -123,6 +129,7 @@ void PlayMonitor::pulse(int64_t x, int64_t y) {
 PlaySummary PlayMonitor::finish(const InterpOutputs& last) {
   s_.done = last.done;
   s_.error = last.error;
+  s_.paused = last.paused;
   s_.error_code = last.error_code;
   s_.error_block = last.error_block;
   s_.error_offset = last.error_offset;

@@ -45,6 +45,7 @@ struct BlockTiming {
 struct PlaySummary {
   uint64_t cycles = 0;  // last cycle observed (the one done/error rose in, if it did)
   bool done = false, error = false;
+  bool paused = false;  // the run ended paused (M00, M01) with no cycle start to come
   uint8_t error_code = 0;
   uint32_t error_block = 0, error_offset = 0;
   AxisPulses pulses_x, pulses_y;
@@ -53,6 +54,8 @@ struct PlaySummary {
   uint64_t lead_in_cycles = 0;  // before the first block loads (reading the first block)
   uint64_t gap_cycles = 0;      // idle between blocks: the reader was too slow
   uint64_t busy_cycles = 0;
+  uint64_t paused_cycles = 0;   // waiting for cycle start after an M00 (or M01)
+  uint64_t tool_on_cycles = 0;  // the tool output on (M03 to M05)
   // Path error (BLU): the largest distance of a pulse position from its block's path.
   double max_path_error = 0;
   uint32_t max_path_error_block = 0;

@@ -34,7 +34,7 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["engine"] = engine_name;
   j["arch"] = arch_name(r.config.arch);
   j["accel_mm_s2"] = r.accel_mm_s2;
-  j["status"] = r.ok() ? "ok" : r.stopped() ? "stopped" : "error";
+  j["status"] = r.ok() ? "ok" : r.stopped() ? "stopped" : s.paused ? "paused" : "error";
   j["blocks"] = s.blocks_played;
   j["blocks_on_tape"] = r.blocks_on_tape;
   j["cycles"] = s.cycles;
@@ -55,6 +55,8 @@ nlohmann::json play_report(const PlayResult& r, const std::string& tape_path,
   j["lead_in_cycles"] = s.lead_in_cycles;
   j["gap_cycles"] = s.gap_cycles;
   j["busy_cycles"] = s.busy_cycles;
+  j["paused_cycles"] = s.paused_cycles;
+  j["tool_on_cycles"] = s.tool_on_cycles;
   j["feed"] = {{"timed_blocks", s.timed_blocks},
                {"saturated_blocks", s.saturated_blocks},
                {"worst_relative_time_error", s.worst_relative_time_error},

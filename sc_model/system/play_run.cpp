@@ -80,7 +80,8 @@ PlayResult run_play(const std::vector<uint8_t>& frames, const tape::Program& pro
   r.frames = frames.size();
   r.blocks_on_tape = program.blocks.size();
   r.max_cycles = opt.max_cycles ? opt.max_cycles
-                                : cycle_limit_for(program, frames.size(), r.cycles_per_frame, r.config);
+                                : cycle_limit_for(program, frames.size(), r.cycles_per_frame, r.config) +
+                                      last_event_cycle(opt.events);
 
   std::unique_ptr<AtomicOutputFile> vcd;
   SystemSetup setup;

@@ -118,7 +118,7 @@ bool SystemTop::falling_edge() {
   }
   if (setup_.progress && cycle_ % setup_.progress_every == 0)
     setup_.progress(cycle_, monitor_.pulse_block());
-  if (monitor_.finished()) return false;
+  if (monitor_.finished() || source_.run_over(engine_->outputs())) return false;
   if (cycle_ >= setup_.max_cycles) {
     limit_reached_ = true;
     return false;

@@ -116,7 +116,10 @@ int run(const CheckArgs& a) {
   if (svg_out) OutputSet::write(svg_out, checker::check_svg(outcome, ctx));
   outputs.commit();
   std::cout << checker::check_summary_text(outcome, ctx);
-  return !outcome.passed() ? 2 : outcome.checker->stopped() ? kExitStopped : 0;
+  return !outcome.passed()              ? 2
+         : outcome.checker->stopped() ? kExitStopped
+         : outcome.checker->paused()  ? kExitPaused
+                                      : 0;
 }
 
 CommandRegistration registration("check", [](CLI::App& app) {

@@ -72,6 +72,7 @@ const char* end_name(cosim::Result::End end) {
     case cosim::Result::End::kTapeError: return "error";
     case cosim::Result::End::kMismatch: return "mismatch";
     case cosim::Result::End::kCycleLimit: return "cycle_limit";
+    case cosim::Result::End::kPaused: return "paused";
   }
   return "?";
 }
@@ -137,7 +138,8 @@ int run(const CosimArgs& a) {
       tape::parse_frames_partial(frames, tape_format_of(o.config));
   o.max_cycles = a.max_cycles ? a.max_cycles
                               : system::cycle_limit_for(readback.program, frames.size(),
-                                                        o.cycles_per_frame, o.config);
+                                                        o.cycles_per_frame, o.config) +
+                                    last_event_cycle(o.events);
   if (!a.fault.empty()) o.fault = parse_fault(a.fault);
   Progress progress("cosim");
   if (progress.enabled())
@@ -175,6 +177,15 @@ int run(const CosimArgs& a) {
     std::cerr << a.tape << ": stopped at the cycle limit (" << o.max_cycles
               << " cycles) before done or error; the engines agreed so far (--max-cycles)\n";
     return 3;
+  }
+  if (r.end == cosim::Result::End::kPaused) {
+    std::printf("%s: paused after block N%llu at cycle %llu (M00, or M01 with the optional stop on), "
+                "position X%lld Y%lld BLU; no cycle start comes (--events start@Ts); RTL and golden "
+                "model (%s) agree on every clock\n",
+                a.tape.c_str(), static_cast<unsigned long long>(r.last.block_n),
+                static_cast<unsigned long long>(r.cycles), static_cast<long long>(r.last.pos_x),
+                static_cast<long long>(r.last.pos_y), arch_name(a.arch));
+    return kExitPaused;
   }
   if (r.end == cosim::Result::End::kTapeError && is_stop_error(r.last.error_code)) {
     std::printf("%s: %s in block N%llu at cycle %llu, position X%lld Y%lld BLU; RTL and golden model "

@@ -108,6 +108,18 @@ int run(const PlayArgs& a) {
     if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
     return kExitStopped;
   }
+  if (r.summary.paused) {
+    std::printf("%s: paused after block N%llu at %.6g s (M00, or M01 with the optional stop on), "
+                "at X%.3f Y%.3f mm; no cycle start comes (--events start@Ts)\n",
+                a.tape.c_str(),
+                static_cast<unsigned long long>(r.summary.timeline.empty() ? 0 : r.summary.timeline.back().n),
+                report["simulated_seconds"].get<double>(),
+                static_cast<double>(r.summary.final_x) / std::pow(10.0, r.config.frac_digits),
+                static_cast<double>(r.summary.final_y) / std::pow(10.0, r.config.frac_digits));
+    if (r.vcd_written) std::printf("VCD: %s\n", a.vcd.c_str());
+    if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
+    return kExitPaused;
+  }
   if (const auto e = play_error(r, readback.error)) {
     std::cerr << a.tape << ": block N" << e->block << ", offset " << e->offset << ": "
               << e->message << "\n";

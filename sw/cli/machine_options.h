@@ -40,6 +40,8 @@ inline CLI::Option* add_accel_option(CLI::App* cmd, double& accel_mm_s2) {
 // The exit status of a play, check or cosim run that an E-stop or a limit of --events
 // ended (README, "Exit codes"): nothing failed, but the program did not run to its end.
 inline constexpr int kExitStopped = 5;
+// ... that paused at an M00 (or M01 with the optional stop on) with no cycle start to come.
+inline constexpr int kExitPaused = 6;
 
 // --events LIST into `events`: the operator's actions, e.g. hold@0.8s,resume@1.2s
 // (machine_events() reads it once the clock is known).

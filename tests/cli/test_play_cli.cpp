@@ -48,7 +48,7 @@ TEST_F(PlayCli, BothEnginesPlayTheExampleIdentically) {
 
   const auto gs = ncinterp::test::vcd_signals(path("g.vcd"));
   const auto rs = ncinterp::test::vcd_signals(path("r.vcd"));
-  EXPECT_EQ(gs.size(), 21u);  // the interpolator's ports, clock and reset included
+  EXPECT_EQ(gs.size(), 23u);  // the interpolator's ports, clock and reset included
   for (const auto& [name, width] : gs) {
     ASSERT_EQ(name.rfind("SystemC.interp.interp_top.", 0), 0u) << name;
     ASSERT_TRUE(rs.count(name)) << name << " is not in the RTL VCD";

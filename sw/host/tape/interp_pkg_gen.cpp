@@ -260,6 +260,14 @@ std::string package(const std::string& tape_dir) {
   code_function(out, "g_setting", "A G code that states what the interpolator always does (tape_codes.def).",
                 codes('G', "Setting"));
   code_function(out, "m_end", "An M code that ends the program (tape_codes.def).", codes('M', "End"));
+  code_function(out, "m_stop", "An M code that pauses the program after its block (tape_codes.def).",
+                codes('M', "Stop"));
+  code_function(out, "m_optional_stop", "An M code that pauses it with the optional stop switch on.",
+                codes('M', "OptionalStop"));
+  code_function(out, "m_tool_on", "An M code that switches the tool on as its block starts.",
+                codes('M', "ToolOn"));
+  code_function(out, "m_tool_off", "An M code that switches the tool off after its block's motion.",
+                codes('M', "ToolOff"));
   out << "\n"
          "  // The feed and rapid overrides (feed_override_i, rapid_override_i): a fraction of\n"
          "  // the block's rate in units of 2^-OverrideFracBits (feed_override.h); OverrideOne is\n"

@@ -38,7 +38,9 @@ constexpr bool is_motion(uint64_t g) {
 }
 
 // What the interpolator does with a G or M code that is not a motion (tape_codes.def).
-enum class CodeKind : uint8_t { kUnsupported, kSetting, kEnd };
+enum class CodeKind : uint8_t {
+  kUnsupported, kSetting, kEnd, kStop, kOptionalStop, kToolOn, kToolOff
+};
 constexpr CodeKind code_kind(char letter, uint64_t number) {
 #define TAPE_CODE(l, n, kind, meaning) \
   if (letter == #l[0] && number == n) return CodeKind::k##kind;
@@ -54,6 +56,12 @@ struct Block {
   int64_t i = 0, j = 0;         // arc centre relative to the block's start, BLU
   uint64_t feed = 0;            // inverse time, units of 10^-feed_frac_digits 1/min;
                                 // 0 for a G00 block (it plays at the rapid rate)
+  // The block's M word, if it is one of these (block_record.def; at most one is set): M00
+  // and M01 pause after the block, M03 switches the tool on as it starts, M05 off as it ends.
+  bool stop = false, optional_stop = false, tool_on = false, tool_off = false;
+  // No motion word, only an M word: played as a G00 of length 0 (motion kRapid, dx = dy =
+  // 0), written back without X and Y.
+  bool still = false;
 };
 
 struct Format {
@@ -69,7 +77,7 @@ struct Format {
 };
 
 struct Program {
-  std::vector<Block> blocks;  // motion blocks in tape order
+  std::vector<Block> blocks;  // motion and still blocks in tape order
   bool end_m30 = false;       // end block is M30 (else M02)
 };
 

@@ -201,11 +201,7 @@ class Reader {
     switch (w) {
       case Word::kN: n_ = static_cast<uint32_t>(value_); break;
       case Word::kG: g_code(); break;
-      case Word::kM:
-        if (code_kind('M', value_) != CodeKind::kEnd) unsupported("M");
-        end_m30_ = value_ == 30;
-        end_in_block_ = true;
-        break;
+      case Word::kM: m_code(); break;
       case Word::kX: block_.dx = v; motion_in_block_ = true; break;
       case Word::kY: block_.dy = v; motion_in_block_ = true; break;
       case Word::kI: block_.i = v; motion_in_block_ = true; break;
@@ -232,13 +228,40 @@ class Reader {
     motion_in_block_ = true;
   }
 
+  // One M word per block: each acts at its own point of the block (tape_codes.def).
+  void m_code() {
+    if (m_in_block_)
+      fail(TapeError::kUnsupportedCode, word_offset_,
+           "unsupported G or M code: M" + std::to_string(value_) +
+               " is a second M word in the block (one M word per block)");
+    m_in_block_ = true;
+    switch (code_kind('M', value_)) {
+      case CodeKind::kEnd:
+        end_m30_ = value_ == 30;
+        end_in_block_ = true;
+        break;
+      case CodeKind::kStop: block_.stop = true; break;
+      case CodeKind::kOptionalStop: block_.optional_stop = true; break;
+      case CodeKind::kToolOn: block_.tool_on = true; break;
+      case CodeKind::kToolOff: block_.tool_off = true; break;
+      default: unsupported("M");
+    }
+  }
+
   [[noreturn]] void unsupported(const char* letter) {
     fail(TapeError::kUnsupportedCode, word_offset_,
          std::string("unsupported G or M code: ") + letter + std::to_string(value_));
   }
 
   void end_block() {
-    if (motion_in_block_) {
+    const bool action = block_.stop || block_.optional_stop || block_.tool_on || block_.tool_off;
+    if (!motion_in_block_ && action) {
+      // A still block: the M word's block, played as a G00 of length 0.
+      block_.n = n_;
+      block_.motion = Motion::kRapid;
+      block_.still = true;
+      program_.blocks.push_back(block_);
+    } else if (motion_in_block_) {
       // A G00 block needs no F (it plays at the rapid rate): its feed is 0 in the Program,
       // while an F word in it still sets the modal F for the blocks that follow.
       const bool rapid = is_rapid(motion_);
@@ -256,7 +279,7 @@ class Reader {
       state_ = State::kEnd;
     }
     block_ = Block{};
-    n_in_block_ = block_has_word_ = motion_in_block_ = end_in_block_ = false;
+    n_in_block_ = block_has_word_ = motion_in_block_ = end_in_block_ = m_in_block_ = false;
   }
 
   void check_arc() {
@@ -283,7 +306,7 @@ class Reader {
   bool end_m30_ = false;
   Block block_;
   bool n_in_block_ = false, block_has_word_ = false, motion_in_block_ = false,
-       end_in_block_ = false;
+       end_in_block_ = false, m_in_block_ = false;
   Program program_;
 };
 

@@ -38,8 +38,18 @@ void check_sequence(const Block& b, const Format& f, const std::string& where) {
     throw std::invalid_argument(where + "N exceeds the sequence register");
 }
 
+// The block's M word (tape_codes.def), or null.
+const char* m_word(const Block& b) {
+  return b.stop ? "M00" : b.optional_stop ? "M01" : b.tool_on ? "M03" : b.tool_off ? "M05" : nullptr;
+}
+
 void check_block(const Block& b, const Format& f) {
   const auto where = "block N" + std::to_string(b.n) + ": ";
+  if (b.stop + b.optional_stop + b.tool_on + b.tool_off > 1)
+    throw std::invalid_argument(where + "more than one M word (one M word per block)");
+  if (b.still && (!m_word(b) || b.dx != 0 || b.dy != 0 || b.i != 0 || b.j != 0 ||
+                  !is_rapid(b.motion) || b.feed != 0))
+    throw std::invalid_argument(where + "a still block has an M word and nothing else");
   const uint64_t inc_max = max_for_width(f.inc_width);
   auto check_inc = [&](int64_t v, const char* word) {
     if (magnitude(v) > inc_max)
@@ -85,13 +95,16 @@ std::string format_program(const Program& program, const Format& format) {
   out << "%\nG17 G21 G91 G93\n";
   for (const Block& b : program.blocks) {
     check_block(b, format);
-    out << 'N' << b.n << ' ' << motion_word(b.motion)
-        << " X" << signed_fixed_point(b.dx, format.frac_digits)
-        << " Y" << signed_fixed_point(b.dy, format.frac_digits);
-    if (is_arc(b.motion))
-      out << " I" << signed_fixed_point(b.i, format.frac_digits)
-          << " J" << signed_fixed_point(b.j, format.frac_digits);
-    if (!is_rapid(b.motion)) out << " F" << fixed_point(b.feed, format.feed_frac_digits);
+    out << 'N' << b.n;
+    if (!b.still) {
+      out << ' ' << motion_word(b.motion) << " X" << signed_fixed_point(b.dx, format.frac_digits)
+          << " Y" << signed_fixed_point(b.dy, format.frac_digits);
+      if (is_arc(b.motion))
+        out << " I" << signed_fixed_point(b.i, format.frac_digits)
+            << " J" << signed_fixed_point(b.j, format.frac_digits);
+      if (!is_rapid(b.motion)) out << " F" << fixed_point(b.feed, format.feed_frac_digits);
+    }
+    if (const char* m = m_word(b)) out << ' ' << m;
     out << '\n';
   }
   out << (program.end_m30 ? "M30" : "M02") << "\n%\n";

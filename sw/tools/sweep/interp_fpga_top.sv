@@ -42,6 +42,8 @@ module interp_fpga_top #(
   output logic       error_o,
   output logic [interp_pkg::ErrCodeWidth-1:0] error_code_o,
   output logic       feed_saturated_o,
+  output logic       tool_o,
+  output logic       paused_o,
   input  logic [4:0] rd_sel_i,      // which byte of the status word
   output logic [7:0] rd_data_o
 );
@@ -69,13 +71,13 @@ module interp_fpga_top #(
     .clk_i, .rst_ni,
     .feed_modulus_i(modulus_q), .rapid_step_i(rapid_q), .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
-    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0),
+    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
     .pos_x_o(pos_x), .pos_y_o(pos_y),
     .block_n_o(block_n), .busy_o, .done_o, .error_o, .error_code_o,
     .error_block_o(error_block), .error_offset_o(error_offset),
-    .feed_saturated_o
+    .feed_saturated_o, .tool_o, .paused_o
   );
 
   assign status = (8 * StatusBytes)'({pos_x, pos_y, block_n, error_block, error_offset});

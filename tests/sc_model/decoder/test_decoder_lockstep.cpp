@@ -64,8 +64,8 @@ std::vector<uint8_t> random_tape(std::mt19937_64& rng, const InterpConfig& c) {
     if (chance(60)) t += "N" + number(rng, c.seq_width, 0) + " ";
     if (chance(50)) {
       static const char* const codes[] = {"01", "1", "02", "03", "17", "01", "91", "00", "93", "2",
-                                          "99", "100", "123"};
-      const std::string g = codes[rng() % (chance(90) ? 10 : 13)];
+                                          "09", "61", "99", "64", "100", "123"};
+      const std::string g = codes[rng() % (chance(90) ? 12 : 16)];
       t += "G" + g + " ";
       if (g == "01" || g == "1" || g == "00") arc = false;
       if (g == "02" || g == "03" || g == "2") arc = true;
@@ -78,6 +78,12 @@ std::vector<uint8_t> random_tape(std::mt19937_64& rng, const InterpConfig& c) {
       t += number(rng, bits, c.frac_digits);
     }
     if (chance(60)) t += "F" + number(rng, c.feed_width, c.feed_frac_digits);
+    // An M word that acts (a still block without X, Y, I, J), now and then two (refused),
+    // or one the interpolator does not have (M04).
+    for (int m = 0; m < 2 && chance(m == 0 ? 25 : 10); ++m) {
+      static const char* const codes[] = {"00", "0", "01", "03", "3", "05", "5", "04"};
+      t += std::string(" M") + codes[rng() % (chance(95) ? 7 : 8)];
+    }
     if (chance(3)) {  // a fault: a stray character somewhere in the block
       static const std::string stray = "XYZ+-.0123456789 \r%(A";
       const size_t at = 2 + rng() % (t.size() - 1);
@@ -118,7 +124,8 @@ uint64_t bits(const Port& port, unsigned lo, unsigned width) {
 // The held block's fields, read from blk_o in sw/host/tape/block_record.def's order (the last
 // field in the lowest bits).
 struct HeldBlock {
-  uint64_t n, motion, dx_neg, dx, dy_neg, dy, i, j, step_over, iterations, step;
+  uint64_t n, motion, stop, optional_stop, tool_on, tool_off, dx_neg, dx, dy_neg, dy, i, j,
+      step_over, iterations, step;
 };
 template <typename Port>
 HeldBlock unpack(const Port& p, const InterpConfig& c, unsigned step_width) {
@@ -140,6 +147,10 @@ HeldBlock unpack(const Port& p, const InterpConfig& c, unsigned step_width) {
   b.dy_neg = take(1);
   b.dx = take(w);
   b.dx_neg = take(1);
+  b.tool_off = take(1);
+  b.tool_on = take(1);
+  b.optional_stop = take(1);
+  b.stop = take(1);
   b.motion = take(2);
   b.n = take(c.seq_width);
   return b;
@@ -150,7 +161,7 @@ template <typename Model>
 ::testing::AssertionResult same(const Model& m, const GoldenTapeDecoder& g, const InterpConfig& c,
                                 unsigned step_width) {
   using State = GoldenTapeDecoder::State;
-  const DecodedBlock& b = g.block();
+  const DecodedBlock b = g.block();
   std::ostringstream diff;
   const auto check = [&](const char* name, uint64_t rtl, uint64_t golden) {
     if (rtl != golden && diff.tellp() == 0)
@@ -164,6 +175,10 @@ template <typename Model>
     const HeldBlock h = unpack(m.blk_o, c, step_width);
     check("blk_o.n", h.n, b.n);
     check("blk_o.motion", h.motion, b.motion);
+    check("blk_o.stop", h.stop, b.stop);
+    check("blk_o.optional_stop", h.optional_stop, b.optional_stop);
+    check("blk_o.tool_on", h.tool_on, b.tool_on);
+    check("blk_o.tool_off", h.tool_off, b.tool_off);
     check("blk_o.dx", h.dx, b.dx);
     check("blk_o.dx_neg", h.dx_neg, b.dx_neg);
     check("blk_o.dy", h.dy, b.dy);
@@ -192,6 +207,7 @@ template <typename Model>
 struct Outcomes {
   int ended = 0, held_blocks = 0;
   int saturated_steps = 0;  // held blocks whose S reached 2^StepWidth (step_over)
+  int m_blocks = 0;         // held blocks with an M word that acts (M00, M01, M03, M05)
   int errors[16] = {0};
 };
 
@@ -229,7 +245,9 @@ template <typename Model>
       const bool free = rng() % 100 < free_percent;
       if (free && g.state() == GoldenTapeDecoder::State::kHold) {
         ++out.held_blocks;
-        out.saturated_steps += g.block().step_over;
+        const DecodedBlock b = g.block();
+        out.saturated_steps += b.step_over;
+        out.m_blocks += b.stop || b.optional_stop || b.tool_on || b.tool_off;
       }
       if (offer && m.frame_ready_o) ++next;
       m.frame_valid_i = in.frame_valid;
@@ -260,6 +278,7 @@ template <typename Model>
 void expect_coverage(const Outcomes& o) {
   EXPECT_GT(o.ended, 100);
   EXPECT_GT(o.held_blocks, 2000);
+  EXPECT_GT(o.m_blocks, 200);
   EXPECT_GT(o.errors[static_cast<int>(TapeError::kValueTooWide)], 100);
   EXPECT_GT(o.errors[static_cast<int>(TapeError::kMalformedNumber)], 20);
 }

@@ -162,8 +162,10 @@ std::vector<BadTape> bad_tapes() {
   t.push_back({"g04", s, TapeError::kUnsupportedCode, 20, at(s, "G04"), good});
   s = head + "N20 G03 X1.000 Y1.000 I1.000 J0.000\nM02\n%\n";
   t.push_back({"arc_leaves_its_quadrant", s, TapeError::kArcCrossesQuadrant, 20, at(s, "\n", at(s, "N20")), good});
-  s = head + "N20 M00\nM02\n%\n";
-  t.push_back({"m00", s, TapeError::kUnsupportedCode, 20, at(s, "M00"), good});
+  s = head + "N20 M04\nM02\n%\n";  // spindle counter-clockwise: the tool pin has one way
+  t.push_back({"m04", s, TapeError::kUnsupportedCode, 20, at(s, "M04"), good});
+  s = head + "N20 M03 M00\nM02\n%\n";  // one M word per block
+  t.push_back({"two_m_words", s, TapeError::kUnsupportedCode, 20, at(s, "M00"), good});
   s = head + "N1048576 X0.001\nM02\n%\n";
   t.push_back({"n_too_wide", s, TapeError::kValueTooWide, 10, at(s, "1048576") + 6, good});
   s = head + "N20 X0.001 F4294967.296\nM02\n%\n";
