@@ -41,6 +41,7 @@ const char* rule_name(Rule rule) {
     case Rule::kComplete: return "complete";
     case Rule::kHeld: return "held";
     case Rule::kStop: return "stop";
+    case Rule::kTool: return "tool";
     case Rule::kAcceleration: return "accel";
     case Rule::kTotalError: return "tolerance";
   }
@@ -88,10 +89,15 @@ TrajectoryChecker::TrajectoryChecker(std::vector<ProgrammedBlock> blocks,
                                      ReferenceContour* reference, const CheckerOptions& options)
     : blocks_(std::move(blocks)), reference_(reference), options_(options) {
   results_.resize(blocks_.size());
+  bool tool = false;  // the tool output the tape's M03 and M05 ask for
   for (size_t k = 0; k < blocks_.size(); ++k) {
     const ProgrammedBlock& b = blocks_[k];
     BlockResult& r = results_[k];
     r.rapid = b.is_rapid();  // a G00 block on the tape is a traverse; every other one cuts
+    // M03 switches the tool on as its block starts, M05 off when its block's motion ends.
+    tool = tool || b.tape.tool_on;
+    r.tool = tool;
+    tool = tool && !b.tape.tool_off;
     r.bound = b.is_arc() ? arc_path_bound(norm(to_vec(b.start) - b.centre), norm(to_vec(b.end) - b.centre),
                                           options_.arc_bound_blu)
                          : line_path_bound(b.tape.dx, b.tape.dy);
@@ -179,6 +185,10 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
                    " while the block moves " + axis_name(a) + " by " + std::to_string(d[a]));
     }
     if (pulsed) on_pulse(cycle, step, dir);
+    if (pulsed && o.tool != results_[cur_].tool)
+      report(Rule::kTool, cycle,
+             std::string("tool_o = ") + (o.tool ? "1" : "0") + " at a pulse of a block the tape has the tool " +
+                 (results_[cur_].tool ? "on (after M03)" : "off"));
     if (options_.schedule && timed(b)) {
       if (!ramped())
         check_schedule(cycle, pulsed);
@@ -247,6 +257,15 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o, bool
     return;
   }
   cur_ = loaded_++;
+  // A still block (an M word alone, no pulses) with its predecessor's N (an M00 line
+  // without N carries the last N) shows no load of its own: a load of another N has passed
+  // it.
+  while (load_known && o.block_n != blocks_[cur_].tape.n && blocks_[cur_].tape.still && cur_ > 0 &&
+         blocks_[cur_ - 1].tape.n == blocks_[cur_].tape.n && loaded_ < blocks_.size()) {
+    results_[cur_].played = results_[cur_].finished = true;
+    results_[cur_].load_cycle = results_[cur_].end_cycle = cycle;
+    cur_ = loaded_++;
+  }
   active_ = true;
   load_known_ = load_known;
   reported_ = 0;

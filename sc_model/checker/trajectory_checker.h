@@ -61,6 +61,7 @@ enum class Rule : uint8_t {
   kHeld,
   kAcceleration,
   kStop,
+  kTool,
   kTotalError,  // set by the caller's tolerance check, not by observe()
 };
 const char* rule_name(Rule rule);
@@ -91,6 +92,7 @@ struct BlockResult {
   bool played = false;     // loaded
   bool finished = false;   // ended (next load or busy falling)
   bool rapid = false;      // a G00 block: a traverse, no total error
+  bool tool = false;       // the tool output during its pulses (M03 before it, no M05 yet)
   uint64_t load_cycle = 0, end_cycle = 0;
   uint64_t pulses[2] = {0, 0};
   ErrorStat path;          // distance to the programmed block

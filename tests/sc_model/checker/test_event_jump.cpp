@@ -100,7 +100,22 @@ TEST(EventJump, JumpedRunEqualsClockedAtEveryEvent) {
                     {60000, OperatorEvent::kFeedOverride, kOverrideOne},
                     {90000, OperatorEvent::kFeedOverride, 200}};
         }
-        const tape::Program p = mixed_program(rng, true);
+        tape::Program p = mixed_program(rng, true);
+        if (k == 2) {
+          // M words: the tool on and off, and two pauses (M00, and M01 with the switch on)
+          // that cycle start presses every 7000 clocks end.
+          p.blocks[2].tool_on = true;
+          p.blocks[6].tool_off = true;
+          tape::Block pause{40, tape::Motion::kRapid};
+          pause.still = pause.stop = true;
+          p.blocks.insert(p.blocks.begin() + 4, pause);
+          pause.n = 41;
+          pause.stop = false;
+          pause.optional_stop = true;
+          p.blocks.insert(p.blocks.begin() + 9, pause);
+          events.push_back({1, OperatorEvent::kOptionalStop, 1});
+          for (uint64_t c = 7000; c < 2'000'000; c += 7000) events.push_back({c, OperatorEvent::kStart});
+        }
         skipped += expect_jumped_equals_clocked(test::frames_of(p), cfg, cpf, nullptr, events);
         ++cases;
       }

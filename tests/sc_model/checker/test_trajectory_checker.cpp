@@ -198,6 +198,47 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
   }
 }
 
+// M words in check: a tape with M03, M05 and an M00 still block (cycle start pressed later)
+// passes every rule on both archs; a checker whose tape turns the tool on one block later
+// than the played one finds the first block's pulses with the tool on (the tool rule, and
+// only it); a run no press resumes ends paused, every rule holding up to the pause.
+TEST(TrajectoryChecker, ToolOutputFollowsTheTapesM03AndM05) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    std::mt19937 rng(17);
+    CheckSetup setup = at_1mhz(arch, 500);
+    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+    tape::Program p = test::random_line_program(rng, 5, 12, modulus, 30000, 60000);
+    p.blocks[1].tool_on = true;
+    p.blocks[3].tool_off = true;
+    tape::Block pause{p.blocks[2].n, tape::Motion::kRapid};
+    pause.still = pause.stop = true;
+    p.blocks.insert(p.blocks.begin() + 3, pause);
+    const CheckOutcome unpressed = run_check(frames_of(p), nullptr, setup);
+    ASSERT_TRUE(unpressed.passed()) << arch_name(arch) << ": " << first_violation(*unpressed.checker);
+    EXPECT_TRUE(unpressed.checker->paused());
+    EXPECT_TRUE(unpressed.run.last.tool);  // paused between M03 and M05
+    setup.events = {{3'000'000, OperatorEvent::kStart}};
+    const CheckOutcome played = run_check(frames_of(p), nullptr, setup);
+    ASSERT_TRUE(played.passed()) << arch_name(arch) << ": " << first_violation(*played.checker);
+    EXPECT_FALSE(played.checker->paused());
+    EXPECT_TRUE(played.run.last.done);
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
+    cfg.arch = arch;
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1, nullptr, setup.events);
+    tape::Program late = p;
+    late.blocks[1].tool_on = false;
+    late.blocks[2].tool_on = true;
+    TrajectoryChecker c(lay_out(late), nullptr, options_for(cfg));
+    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+    c.finish(trace.back());
+    ASSERT_GT(c.violation_count(), 0u) << arch_name(arch);
+    for (const Violation& v : c.violations()) {
+      EXPECT_EQ(v.rule, Rule::kTool) << arch_name(arch) << ": " << v.detail;
+      EXPECT_EQ(v.n, p.blocks[1].n) << arch_name(arch);
+    }
+  }
+}
+
 // Overrides in check (--events): runs at 200 %, at 30 % and changing mid-block pass every
 // rule on both archs; a checker not told of the 200 % finds the parallel player's blocks
 // shorter than documented (the duration rule, and only it).

@@ -223,6 +223,68 @@ TEST_P(CosimArch, OverridesStayInLockStepAndKeepThePulses) {
   }
 }
 
+// The M words (M03 and M05 on the tool output, M00 and M01 pausing until cycle start):
+// lock step on both archs, with and without the ramp, with the optional stop switch on and
+// off and cycle start pressed at random clocks. The pulses are those of the tape without
+// its M words; every pulse of a block between M03 and M05 has the tool on and every other
+// the tool off; the program pauses at each M00 (and M01 with the switch on), emits no pulse
+// while paused, and goes on at the next press. Without a press the run ends paused.
+TEST_P(CosimArch, MWordsStayInLockStepAndKeepThePulses) {
+  std::mt19937_64 rng(3305);
+  const std::string head = "%\nG17 G21 G91 G93\nN1 G00 X2.000 Y1.000\n";
+  const std::string tail = "N10 G00 X-4.000 Y-3.000\nM02\n%\n";
+  const std::string m_tape = head +
+      "N2 M03\nN3 G01 X3.000 Y0.000 F300.000\nN4 G03 X-2.000 Y2.000 I-2.000 J0.000 F120.000\n"
+      "N5 G01 X-1.000 Y-1.000 F200.000 M05\nN6 M00\nN7 G01 X2.000 Y1.000 F400.000 M03\n"
+      "N8 M01\nN9 G01 X0.000 Y0.000 F400.000 M05\n" + tail;
+  const std::string plain_tape = head +
+      "N3 G01 X3.000 Y0.000 F300.000\nN4 G03 X-2.000 Y2.000 I-2.000 J0.000 F120.000\n"
+      "N5 G01 X-1.000 Y-1.000 F200.000\nN7 G01 X2.000 Y1.000 F400.000\n" + tail;
+  const std::set<uint32_t> tool_blocks = {3, 4, 5, 7};  // M03 at N2's load, M05 after N5 ...
+  for (const bool ramped : {false, true}) {
+    Options o = at_20khz(GetParam());
+    if (ramped) o.config.accel_step = InterpConfig::accel_step_for(500, 20e3, 3, o.config.feed_modulus);
+    OutputRecorder plain_rec;
+    const Result plain = run(frames_of(plain_tape), o, plain_rec);
+    ASSERT_EQ(plain.end, Result::End::kDone);
+    for (int t = 0; t < 4; ++t) {
+      Options at = o;
+      const bool optional = t % 2 == 1;
+      if (optional) at.events.push_back({1, OperatorEvent::kOptionalStop, 1});
+      std::uniform_int_distribution<uint64_t> gap(1, plain.cycles / 4);
+      for (uint64_t c = gap(rng); c < 4 * plain.cycles; c += gap(rng))
+        at.events.push_back({c, OperatorEvent::kStart});
+      OutputRecorder rec;
+      int pauses = 0;
+      bool was_paused = false, pulse_while_paused = false, tool_wrong = false;
+      const Result r = cosim::run_lockstep(frames_of(m_tape), at, [&](uint64_t c, const InterpOutputs& out) {
+        rec.observe(c, out);
+        pauses += out.paused && !was_paused;
+        was_paused = out.paused;
+        if (out.step_x || out.step_y) {
+          pulse_while_paused |= out.paused;
+          tool_wrong |= out.tool != (tool_blocks.count(out.block_n) > 0);
+        }
+      });
+      const std::string run = std::string(ramped ? "ramped" : "unramped") + " run " + std::to_string(t);
+      ASSERT_FALSE(r.mismatch) << run << ": " << cosim::describe(*r.mismatch);
+      ASSERT_EQ(r.end, Result::End::kDone) << run;
+      EXPECT_TRUE(same_pulse_order(rec, plain_rec)) << run;
+      EXPECT_EQ(pauses, optional ? 2 : 1) << run;
+      EXPECT_FALSE(pulse_while_paused) << run;
+      EXPECT_FALSE(tool_wrong) << run;
+      EXPECT_FALSE(r.last.tool) << run;  // off after N9's M05, and at the end of the program
+      EXPECT_EQ(r.last.pos_x, 0);
+      EXPECT_EQ(r.last.pos_y, 0);
+    }
+    const Result unpressed = run(frames_of(m_tape), o, *std::make_unique<OutputRecorder>());
+    ASSERT_FALSE(unpressed.mismatch) << cosim::describe(*unpressed.mismatch);
+    EXPECT_EQ(unpressed.end, Result::End::kPaused);
+    EXPECT_EQ(unpressed.last.block_n, 6u);
+    EXPECT_TRUE(unpressed.last.paused);
+  }
+}
+
 // E-stop and the limits at random clocks, after random holds, with and without the ramp:
 // lock step on both archs; the run ends at the stop's clock in the error with the stop's
 // code, naming the block playing; its pulses are the first ones of the run without the
