@@ -46,7 +46,11 @@ module interp_top #(
   parameter bit CircleMode  = 1'b1,
   // The feed ramp (feed_generator.sv): accel_step_i > 0 ramps every block's rate from rest
   // and back, at most accel_step_i per clock; 0, or Accel = 0, plays every block at its S.
-  parameter bit Accel       = 1'b1
+  parameter bit Accel       = 1'b1,
+  // The miscellaneous functions M00, M01 (the pause until start_i), M03 and M05 (tool_o):
+  // 1 built in; 0 refuses them (error 6, unsupported code) and builds none of their logic,
+  // tool_o and paused_o being 0 (the iCEstick's configuration: its HX1K is full).
+  parameter bit MiscFunctions = 1'b1
 ) (
   input  logic                    clk_i,
   input  logic                    rst_ni,
@@ -164,7 +168,7 @@ module interp_top #(
     .IncWidth(IncWidth), .FracDigits(FracDigits), .FeedWidth(FeedWidth),
     .FeedFracDigits(FeedFracDigits), .SeqWidth(SeqWidth), .OffsetWidth(OffsetWidth),
     .StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .BitSerial(BitSerial),
-    .CircleMode(CircleMode), .Accel(Accel)
+    .CircleMode(CircleMode), .Accel(Accel), .MiscFunctions(MiscFunctions)
   ) u_decoder (
     .clk_i, .rst_ni, .rapid_step_i,
     .frame_i, .frame_valid_i, .tape_end_i, .frame_ready_o,
@@ -189,7 +193,8 @@ module interp_top #(
   // A block loads when one waits and the player is idle or finishing the previous block
   // (unless that one pauses the program), while the program neither is paused nor has been
   // stopped by a stop input.
-  assign pause = busy_q && finished && (after_stop_q || (after_optional_stop_q && optional_stop_i));
+  assign pause = MiscFunctions && busy_q && finished &&
+                 (after_stop_q || (after_optional_stop_q && optional_stop_i));
   assign load  = next_valid && (!busy_q || (finished && !pause)) && !stopped && !paused_q;
 
   feed_generator #(.StepWidth(StepWidth), .ModulusWidth(ModulusWidth), .LeadBits(LeadBits),
@@ -303,13 +308,13 @@ module interp_top #(
     error_d = error_d | (stop_d != '0);
     done_d  = done_d & (stop_d == '0);
     // A pause from the edge its block ends at, until a cycle start after it or a stop.
-    paused_d = (pause || (paused_q && !start_i)) && !error_d;
+    paused_d = MiscFunctions && (pause || (paused_q && !start_i)) && !error_d;
     // The tool: off after an M05 block's motion, on at an M03 block's load (an M03 loading
     // as an M05 block ends wins), off when the program stops for any reason.
     tool_d = tool_q;
     if (busy_q && finished && after_tool_off_q) tool_d = 1'b0;
     if (load && next_block.tool_on) tool_d = 1'b1;
-    if (error_d || done_d) tool_d = 1'b0;
+    if (error_d || done_d || !MiscFunctions) tool_d = 1'b0;
   end
 
   always_ff @(posedge clk_i) begin

@@ -55,7 +55,10 @@ module tape_decoder #(
   parameter bit CircleMode     = 1'b1,
   // The feed ramp is built (interp_top's Accel): only it reads the block's N, so without it
   // N is a constant 0 and its count folds away.
-  parameter bit Accel          = 1'b1
+  parameter bit Accel          = 1'b1,
+  // M00, M01, M03 and M05 are played (interp_top's MiscFunctions); without them each is an
+  // unsupported code (error 6).
+  parameter bit MiscFunctions  = 1'b1
 ) (
   // The ports are declared below, after block_t (`INTERP_BLOCK_T), which the block's
   // port has as its type and which needs the parameters above.
@@ -164,8 +167,12 @@ module tape_decoder #(
   logic n_seen_q, n_seen_d, any_word_q, any_word_d;
   logic motion_blk_q, motion_blk_d, end_blk_q, end_blk_d;
   logic stop_q, stop_d, optional_stop_q, optional_stop_d, tool_on_q, tool_on_d;
-  logic tool_off_q, tool_off_d, m_seen, action_d;
-  assign m_seen = end_blk_q | stop_q | optional_stop_q | tool_on_q | tool_off_q;
+  logic tool_off_q, tool_off_d, m_seen, action_d, still;
+  // (Each use is gated by MiscFunctions, so that without them the logic is that of a decoder
+  // that never had them: synthesis cannot see that these flip-flops stay 0.)
+  assign m_seen = end_blk_q | (MiscFunctions & (stop_q | optional_stop_q | tool_on_q | tool_off_q));
+  // The block held or prepared is a still block: an M word without motion words.
+  assign still  = MiscFunctions && !motion_blk_q;
 
   // Error capture: the first error found (valid in StError). Its block is n_q: n_d at the
   // error's edge, and no N is committed in StError; its offset is the frame input's
@@ -230,8 +237,7 @@ module tape_decoder #(
   );
 
   assign preparing = state_q == StPrepare;
-  assign in_arc    = CircleMode && preparing && motion_blk_q &&
-                     interp_pkg::motion_is_arc(motion_q);
+  assign in_arc    = CircleMode && preparing && !still && interp_pkg::motion_is_arc(motion_q);
   // The reader has delivered every frame, none waits, and the program has not ended.
   assign tape_cut = tape_end_q && !waiting &&
                     (state_q == StLeader || state_q == StBody || state_q == StComment);
@@ -327,6 +333,7 @@ module tape_decoder #(
                     interp_pkg::ChM: begin
                       if (m_seen) word_ok = 1'b0;
                       else if (interp_pkg::m_end(word_value[6:0])) end_blk_d = 1'b1;
+                      else if (!MiscFunctions) word_ok = 1'b0;
                       else if (interp_pkg::m_stop(word_value[6:0])) stop_d = 1'b1;
                       else if (interp_pkg::m_optional_stop(word_value[6:0]))
                         optional_stop_d = 1'b1;
@@ -357,7 +364,7 @@ module tape_decoder #(
                       any_word_d = 1'b1;
                     end
                   end else if (ch == interp_pkg::ChLf) begin
-                    action_d = stop_d | optional_stop_d | tool_on_d | tool_off_d;
+                    action_d = MiscFunctions & (stop_d | optional_stop_d | tool_on_d | tool_off_d);
                     if (motion_blk_d || action_d) begin
                       // G00 plays at the rapid rate: it needs no F; nor does a still block.
                       if (motion_blk_d && feed_d == '0 &&
@@ -405,7 +412,7 @@ module tape_decoder #(
         // The one adder: S + F (a line's first clock, an arc's iterations), S + the rapid
         // step (a rapid traverse's first clock) or S + S (a line's doublings). An addend
         // wider than S over-runs S by itself.
-        rapid       = motion_q == interp_pkg::MotionRapid || !motion_blk_q;  // or still
+        rapid       = motion_q == interp_pkg::MotionRapid || still;
         step_addend = !in_arc && !feed_in_q ? step_q
                     : rapid ? StepWidth'(rapid_step_i) : StepWidth'(feed_q);
         feed_over   = !in_arc && !feed_in_q ? 1'b0
@@ -564,11 +571,11 @@ module tape_decoder #(
   end
 
   assign blk_o.n         = n_q;
-  assign blk_o.motion    = motion_blk_q ? motion_q : interp_pkg::MotionRapid;  // still: G00
-  assign blk_o.stop      = stop_q;
-  assign blk_o.optional_stop = optional_stop_q;
-  assign blk_o.tool_on   = tool_on_q;
-  assign blk_o.tool_off  = tool_off_q;
+  assign blk_o.motion    = still ? interp_pkg::MotionRapid : motion_q;  // still: G00
+  assign blk_o.stop      = MiscFunctions & stop_q;
+  assign blk_o.optional_stop = MiscFunctions & optional_stop_q;
+  assign blk_o.tool_on   = MiscFunctions & tool_on_q;
+  assign blk_o.tool_off  = MiscFunctions & tool_off_q;
   assign blk_o.dx        = dx_q;
   assign blk_o.dx_neg    = dx_neg_q;
   assign blk_o.dy        = dy_q;

@@ -42,6 +42,8 @@ module board_core #(
   parameter bit BitSerial  = 1'b1,
   // Circle mode (interp_top's CircleMode): the iCEstick's core is built without it.
   parameter bit CircleMode = 1'b1,
+  // M00, M01, M03 and M05 (interp_top's MiscFunctions): the iCEstick's core has no room.
+  parameter bit MiscFunctions = 1'b1,
   // The interpolator's widths on the board (+-524 mm of travel at 1 um, N and the frame
   // offset below 2^20), as the golden model's board configuration has them
   // (sc_model/board/boards.cpp); the status line sends their low bits.
@@ -68,6 +70,8 @@ module board_core #(
   output logic        dir_x_o,
   output logic        step_y_o,
   output logic        dir_y_o,
+  // The tool (M03 on, M05 off): a spindle relay, a laser's or torch's enable, a pen.
+  output logic        tool_o,
   // LEDs (active high).
   output logic        led_busy_o,
   output logic        led_done_o,
@@ -147,12 +151,15 @@ module board_core #(
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
   // The boards have no feed ramp yet (docs/motion-control.md): Accel = 0 builds none of it.
+  // Nor a cycle start button: start_i is held pressed, so a pause (M00, M01) ends at the
+  // clock after it and the program goes on.
   interp_top #(
     .BitSerial(BitSerial), .CircleMode(CircleMode), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
-    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .Accel(1'b0)
+    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .Accel(1'b0),
+    .MiscFunctions(MiscFunctions)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b0),
+    .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b1),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
@@ -222,6 +229,7 @@ module board_core #(
   assign led_busy_o  = i_busy;
   assign led_done_o  = i_done;
   assign led_error_o = any_error;
+  assign tool_o      = i_tool;
 
   assign obs_frame_ready_o    = frame_ready;
   assign obs_step_x_o         = i_step_x;

@@ -9,7 +9,7 @@
 // the interpolator, docs/board.md), and feed_modulus = 60 * ClockHz * 10^3 makes every
 // block last its programmed 1/F minute. The reset is held for 15 clocks after
 // configuration (the iCE40's flip-flops start at their initial values). LEDs are active
-// high or low (LedActiveLow); step/dir go to the PMOD header.
+// high or low (LedActiveLow); step/dir and the tool output go to the PMOD header.
 // Step timing parameters (ns) and what drivers need (docs/board.md): DRV8825 STEP high and
 // low >= 1.9 us, DIR setup and hold >= 650 ns; TB6600 (TB67S109-based modules) pulse >= 2.5 us,
 // DIR >= 5 us ahead of the pulse. The defaults suit the DRV8825 (2 us pulse, 1 us setup).
@@ -25,9 +25,10 @@ module board_top #(
   parameter int     DirHoldNs  = 1_000,
   // The iCEBreaker's LEDs light on a low pin, the iCEstick's on a high one.
   parameter int     LedActiveLow = 0,
-  // The interpolator's configuration (interp_top's BitSerial, CircleMode).
+  // The interpolator's configuration (interp_top's BitSerial, CircleMode, MiscFunctions).
   parameter bit     BitSerial  = 1'b1,
   parameter bit     CircleMode = 1'b1,
+  parameter bit     MiscFunctions = 1'b1,
   // The machine's rapid rate (G00), mm/min.
   parameter int     RapidMmMin = 5000
 ) (
@@ -39,6 +40,7 @@ module board_top #(
   output logic dir_x_o,
   output logic step_y_o,
   output logic dir_y_o,
+  output logic tool_o,
   output logic led_busy_o,
   output logic led_done_o,
   output logic led_error_o
@@ -79,7 +81,8 @@ module board_top #(
 
   /* verilator lint_off PINCONNECTEMPTY */
   board_core #(
-    .BitSerial(BitSerial), .CircleMode(CircleMode), .ModulusWidth(ModulusWidth),
+    .BitSerial(BitSerial), .CircleMode(CircleMode), .MiscFunctions(MiscFunctions),
+    .ModulusWidth(ModulusWidth),
     .DivWidth(DivWidth), .StretchWidth(StretchWidth)
   ) u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
@@ -88,7 +91,7 @@ module board_top #(
     .setup_cycles_i(StretchWidth'(SetupCycles)), .pulse_cycles_i(StretchWidth'(PulseCycles)),
     .low_cycles_i(StretchWidth'(LowCycles)),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),
-    .step_x_o, .dir_x_o, .step_y_o, .dir_y_o,
+    .step_x_o, .dir_x_o, .step_y_o, .dir_y_o, .tool_o,
     .led_busy_o(led_busy), .led_done_o(led_done), .led_error_o(led_error),
     .obs_frame_ready_o(), .obs_step_x_o(), .obs_dir_x_o(), .obs_step_y_o(), .obs_dir_y_o(),
     .obs_pos_x_o(), .obs_pos_y_o(), .obs_block_n_o(), .obs_busy_o(), .obs_done_o(),

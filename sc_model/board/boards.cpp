@@ -6,10 +6,11 @@
 namespace ncinterp::board {
 
 const std::vector<Board>& boards() {
-  // The iCEstick's FTDI channel B has CTS wired; the iCEBreaker's has only RX and TX.
+  // The iCEstick's FTDI channel B has CTS wired; the iCEBreaker's has only RX and TX. The
+  // iCEstick's HX1K has room for neither arcs nor the M words (docs/board.md).
   static const std::vector<Board> list = {
-      {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, false, "rtscts", Arch::kSerial, false},
-      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, true, "xonxoff", Arch::kSerial, true},
+      {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, false, "rtscts", Arch::kSerial, false, false},
+      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, true, "xonxoff", Arch::kSerial, true, true},
   };
   return list;
 }
@@ -30,6 +31,7 @@ InterpConfig board_interp_config(const Board& b, double clock_hz) {
   InterpConfig cfg = interp_config(clock_hz);
   cfg.arch = b.arch;
   cfg.circle_mode = b.circle_mode;
+  cfg.misc_functions = b.misc_functions;
   // board_core's PosWidth, SeqWidth, OffsetWidth (its status line sends their low bits).
   cfg.pos_width = cfg.seq_width = cfg.offset_width = 20;
   return cfg;

@@ -23,6 +23,7 @@ struct Board {
   std::string flow;            // what its USB-serial chip honours: "rtscts" or "xonxoff"
   Arch arch = Arch::kSerial;   // board_top's BitSerial
   bool circle_mode = true;     // board_top's CircleMode
+  bool misc_functions = true;  // board_top's MiscFunctions (M00, M01, M03, M05)
 };
 
 const std::vector<Board>& boards();
@@ -31,8 +32,8 @@ const Board& board_named(const std::string& name);
 // "icestick, icebreaker".
 std::string board_names();
 
-// The interpolator as board_core builds it for the board at clock_hz: its arch and circle
-// mode, and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
+// The interpolator as board_core builds it for the board at clock_hz: its arch, circle
+// mode and miscellaneous functions, and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
 // sends their low bits, sc_model/board/status_text.h).
 InterpConfig board_interp_config(const Board& b, double clock_hz);
 

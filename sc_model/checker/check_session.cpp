@@ -49,8 +49,10 @@ double blu_of(const tape::Format& format) { return std::pow(10.0, -static_cast<d
 
 void match_first_stage(CheckSetup& s, const firststage::FirstStageOptions& o, firststage::GridPoint start) {
   const bool circle_mode = s.format.circle_mode;  // the machine's, not the tape's
+  const bool misc_functions = s.format.misc_functions;
   s.format = firststage::tape_format(o);
   s.format.circle_mode = circle_mode;
+  s.format.misc_functions = misc_functions;
   s.tol_mm = o.tol_mm;
   s.start_mm = firststage::Vec2{start.x * o.blu_mm, start.y * o.blu_mm};
   s.cutter_radius_mm = o.cutter_radius_mm;

@@ -21,6 +21,7 @@ InterpConfig interp_config(double clock_hz, const tape::Format& format, double r
   cfg.feed_width = format.feed_width;
   cfg.seq_width = format.seq_width;
   cfg.circle_mode = format.circle_mode;
+  cfg.misc_functions = format.misc_functions;
   cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
   cfg.rapid_step = InterpConfig::rapid_step_for(rapid_mm_min, format.frac_digits, format.feed_frac_digits);
   if (accel_mm_s2 > 0) {
@@ -46,6 +47,7 @@ tape::Format tape_format_of(const InterpConfig& cfg) {
   f.feed_width = cfg.feed_width;
   f.seq_width = cfg.seq_width;
   f.circle_mode = cfg.circle_mode;
+  f.misc_functions = cfg.misc_functions;
   return f;
 }
 

@@ -48,6 +48,9 @@ struct InterpConfig {
   // CircleMode: G02/G03 played; without, the lines-only interpolator (an arc's G word is
   // refused, TapeError::kNoCircleMode).
   bool circle_mode = true;
+  // MiscFunctions: M00, M01, M03 and M05 played; without, each is refused
+  // (TapeError::kUnsupportedCode), as the iCEstick's interpolator refuses it.
+  bool misc_functions = true;
   // feed_modulus_i = 60 * clock_hz * 10^feed_frac_digits.
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;
   // rapid_step_i: the feed step S of a rapid traverse (G00), rapid_step_for(): the line's
@@ -65,7 +68,7 @@ struct InterpConfig {
            feed_width == o.feed_width && feed_frac_digits == o.feed_frac_digits &&
            pos_width == o.pos_width && seq_width == o.seq_width &&
            offset_width == o.offset_width && modulus_width == o.modulus_width &&
-           arch == o.arch && circle_mode == o.circle_mode;
+           arch == o.arch && circle_mode == o.circle_mode && misc_functions == o.misc_functions;
   }
 
   bool serial() const { return arch == Arch::kSerial; }

@@ -20,6 +20,7 @@ bool odd_parity(uint8_t frame) { return __builtin_parity(frame) != 0; }
 GoldenTapeDecoder::GoldenTapeDecoder(const InterpConfig& cfg)
     : bit_serial_(cfg.serial()),
       circle_mode_(cfg.circle_mode),
+      misc_functions_(cfg.misc_functions),
       num_width_(std::max({cfg.inc_width, cfg.feed_width, cfg.seq_width, 7u})),
       frac_digits_(cfg.frac_digits),
       feed_frac_digits_(cfg.feed_frac_digits),
@@ -270,11 +271,12 @@ bool GoldenTapeDecoder::commit_word(Word w) {
       const bool m_seen = end_block_ || block_.stop || block_.optional_stop || block_.tool_on ||
                           block_.tool_off;
       const tape::CodeKind kind = tape::code_kind('M', num_);
+      const bool acts = !m_seen && misc_functions_;  // M00, M01, M03, M05 are played
       if (!m_seen && kind == tape::CodeKind::kEnd) end_block_ = true;
-      else if (!m_seen && kind == tape::CodeKind::kStop) block_.stop = true;
-      else if (!m_seen && kind == tape::CodeKind::kOptionalStop) block_.optional_stop = true;
-      else if (!m_seen && kind == tape::CodeKind::kToolOn) block_.tool_on = true;
-      else if (!m_seen && kind == tape::CodeKind::kToolOff) block_.tool_off = true;
+      else if (acts && kind == tape::CodeKind::kStop) block_.stop = true;
+      else if (acts && kind == tape::CodeKind::kOptionalStop) block_.optional_stop = true;
+      else if (acts && kind == tape::CodeKind::kToolOn) block_.tool_on = true;
+      else if (acts && kind == tape::CodeKind::kToolOff) block_.tool_off = true;
       else {
         fail(TapeError::kUnsupportedCode, word_offset_);
         return false;

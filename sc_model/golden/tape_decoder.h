@@ -115,6 +115,7 @@ class GoldenTapeDecoder {
   // circle_mode_: G02/G03 are played (else refused: the RTL's CircleMode).
   bool bit_serial_;
   bool circle_mode_;
+  bool misc_functions_;  // M00, M01, M03, M05 are played (else refused: MiscFunctions)
   unsigned num_width_;
   unsigned frac_digits_, feed_frac_digits_;
   uint64_t inc_limit_, feed_limit_, seq_limit_;

@@ -74,6 +74,9 @@ struct Format {
   // The interpolator plays G02/G03 (circle mode); without it an arc's G word is refused
   // (TapeError::kNoCircleMode), as the lines-only interpolator refuses it.
   bool circle_mode = true;
+  // The interpolator plays M00, M01, M03 and M05; without them (the iCEstick's) each is
+  // refused (TapeError::kUnsupportedCode), as its decoder refuses it.
+  bool misc_functions = true;
 };
 
 struct Program {

@@ -235,17 +235,22 @@ class Reader {
            "unsupported G or M code: M" + std::to_string(value_) +
                " is a second M word in the block (one M word per block)");
     m_in_block_ = true;
-    switch (code_kind('M', value_)) {
-      case CodeKind::kEnd:
-        end_m30_ = value_ == 30;
-        end_in_block_ = true;
-        break;
-      case CodeKind::kStop: block_.stop = true; break;
-      case CodeKind::kOptionalStop: block_.optional_stop = true; break;
-      case CodeKind::kToolOn: block_.tool_on = true; break;
-      case CodeKind::kToolOff: block_.tool_off = true; break;
-      default: unsupported("M");
+    const CodeKind kind = code_kind('M', value_);
+    if (kind == CodeKind::kEnd) {
+      end_m30_ = value_ == 30;
+      end_in_block_ = true;
+      return;
     }
+    if (kind == CodeKind::kUnsupported) unsupported("M");
+    if (!format_.misc_functions)
+      fail(TapeError::kUnsupportedCode, word_offset_,
+           "unsupported G or M code: M" + std::to_string(value_) +
+               ": the interpolator is built without M00, M01, M03 and M05 (the iCEstick's "
+               "configuration, MiscFunctions = 0)");
+    block_.stop = kind == CodeKind::kStop;
+    block_.optional_stop = kind == CodeKind::kOptionalStop;
+    block_.tool_on = kind == CodeKind::kToolOn;
+    block_.tool_off = kind == CodeKind::kToolOff;
   }
 
   [[noreturn]] void unsupported(const char* letter) {

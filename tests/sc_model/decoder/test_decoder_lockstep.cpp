@@ -316,9 +316,12 @@ TEST(DecoderLockstep, LinesOnlyEqualsGoldenEveryClock) {
   Outcomes o;
   InterpConfig c = config(false, true);
   c.circle_mode = false;
+  c.misc_functions = false;
   EXPECT_TRUE(lockstep<Vtape_decoder_lines>(c, 44, 2000, 5, o));
   EXPECT_GT(o.errors[static_cast<int>(TapeError::kNoCircleMode)], 100);
+  EXPECT_GT(o.errors[static_cast<int>(TapeError::kUnsupportedCode)], 100);
   EXPECT_GT(o.held_blocks, 200);
+  EXPECT_EQ(o.m_blocks, 0);
 }
 
 }  // namespace

@@ -92,6 +92,28 @@ TEST(TapeErrors, EachRuleGivesCodeBlockAndOffset) {
   }
 }
 
+// The M words played (Format::misc_functions), and refused by the interpolator built
+// without them (the iCEstick's), at the M word, naming the configuration.
+TEST(TapeErrors, MWordsAreRefusedWithoutTheMiscellaneousFunctions) {
+  const std::string text = kHead + "N2 G01 X1.000 F1.000 M03\nN3 M00\nN4 G01 Y1.000 M05\nM02\n%\n";
+  const Program p = parse_frames(add_parity(text), Format{});
+  ASSERT_EQ(p.blocks.size(), 4u);  // N1 of kHead first
+  EXPECT_TRUE(p.blocks[1].tool_on);
+  EXPECT_TRUE(p.blocks[2].still && p.blocks[2].stop && p.blocks[2].motion == Motion::kRapid);
+  EXPECT_TRUE(p.blocks[3].tool_off);
+  EXPECT_EQ(format_program(p, Format{}).find("N3 M00\n") != std::string::npos, true);
+  Format without;
+  without.misc_functions = false;
+  try {
+    parse_frames(add_parity(text), without);
+    ADD_FAILURE() << "accepted M03 without the miscellaneous functions";
+  } catch (const TapeFormatError& e) {
+    EXPECT_EQ(e.info().code, static_cast<unsigned>(TapeError::kUnsupportedCode)) << e.what();
+    EXPECT_EQ(e.info().offset, text.find("M03")) << e.what();
+    EXPECT_NE(std::string(e.what()).find("MiscFunctions = 0"), std::string::npos) << e.what();
+  }
+}
+
 TEST(TapeErrors, ParityErrorAnywhere) {
   // A flipped bit 7 at every frame of a good tape, including the leader and after the end:
   // always error 1 at that frame, block = the last N committed before it.
