@@ -11,7 +11,8 @@
 // (sw/tools/sweep/rtl_variant.h), built on demand and cached under --cache: no RTL run is
 // skipped. Those cases' tapes are collected and each variant plays its batch at the end.
 // --operator draws an operator per case (operator_events()): the ramp or none, feed holds
-// and starts, overrides with the ramp, in one case of four an E-stop or a limit; the checker
+// and starts, overrides with the ramp, in one case of four an E-stop or a limit, and in
+// every other case a tape with M03 and M05 around its cuts (ncinterp tape --tool); the checker
 // and the lock step on the build's RTL play them (a variant's batch plays its tapes without
 // them).
 // Usage (docs/verification.md):  build/bench/soak/ncinterp_soak --cases 500 --seed 1
@@ -64,9 +65,9 @@ std::string tape_command(const regression::Case& c, const std::string& input) {
   char buf[2048];
   std::snprintf(buf, sizeof buf,
                 "ncinterp tape %s -o %s.tape --tol %g --method %d --blu %g --width %u --arcs %s "
-                "--feed %.17g%s",
+                "--feed %.17g%s%s",
                 input.c_str(), c.name.c_str(), o.tol_mm, o.method, o.blu_mm, o.width,
-                o.arcs_circle ? "circle" : "chords", o.feed_mm_min,
+                o.arcs_circle ? "circle" : "chords", o.feed_mm_min, o.tool ? " --tool" : "",
                 o.cutter_radius_mm > 0
                     ? (" --cutter-radius " + std::to_string(o.cutter_radius_mm) + " --side " +
                        (o.side_left ? "left" : "right"))
@@ -233,7 +234,10 @@ int main(int argc, char** argv) {
       continue;
     }
     c.check.format.circle_mode = !a.lines_only;
-    if (a.operator_events) operator_events(c.check, seed, a.seconds);
+    if (a.operator_events) {
+      operator_events(c.check, seed, a.seconds);
+      c.first_stage.tool = seed % 2 == 0;  // M03 and M05 around the cuts (the tool rule)
+    }
     for (Arch arch : archs) {
       c.check.arch = arch;
       ArchTally& t = tally[arch];

@@ -63,6 +63,8 @@ std::string board_refusal(const board::Board& b, const FirstStageOptions& o) {
            (want.frac_digits == 3 ? std::string("0.001") : "1e-" + std::to_string(want.frac_digits));
   if (f.feed_width > want.feed_width)
     return board + "its F register is " + std::to_string(want.feed_width) + " bits";
+  if (o.tool && !b.misc_functions)
+    return board + "its interpolator is built without M03 and M05 (to fit the " + b.part + "): leave out --tool";
   return "";
 }
 
@@ -282,6 +284,9 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
   cmd->add_option("--feed", o.feed_mm_min, "feed, mm/min (written as inverse time, G93)")
       ->capture_default_str();
   cmd->add_flag("--zones", o.zones, "end chords at every reference point (joint), as in the paper");
+  cmd->add_flag("--tool", o.tool,
+                "the tool output on for the cuts only (laser, torch, pen): M03 with the first cut "
+                "after each traverse, M05 with the last before the next");
   cmd->add_option("--budget-blu", o.budget_blu, "interpolator's own error reserved from --tol, BLU")
       ->capture_default_str();
   cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm")

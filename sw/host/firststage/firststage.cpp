@@ -321,6 +321,35 @@ FirstStageResult run_first_stage(const Contour& contour, const FirstStageOptions
   return res;
 }
 
+namespace {
+
+// --tool: every run of cuts (blocks other than G00) gets M03 with its first block, as it
+// starts, and M05 with its last, as its motion ends; a run of one block, which can carry
+// one M word only, gets its M05 in a still block after it, with the same N (so the motion
+// blocks keep their numbers). Both act at rest (exact stop), and the traverses between
+// runs play with the tool off.
+void switch_tool_for_cuts(tape::Program& prog) {
+  std::vector<tape::Block> out;
+  const std::vector<tape::Block>& in = prog.blocks;
+  for (size_t k = 0; k < in.size(); ++k) {
+    tape::Block b = in[k];
+    const bool cut = !tape::is_rapid(b.motion);
+    const bool first = cut && (k == 0 || tape::is_rapid(in[k - 1].motion));
+    const bool last = cut && (k + 1 == in.size() || tape::is_rapid(in[k + 1].motion));
+    b.tool_on = first;
+    b.tool_off = last && !first;
+    out.push_back(b);
+    if (first && last) {
+      tape::Block off{b.n, tape::Motion::kRapid};
+      off.still = off.tool_off = true;
+      out.push_back(off);
+    }
+  }
+  prog.blocks = std::move(out);
+}
+
+}  // namespace
+
 tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o) {
   tape::Program prog;
   prog.blocks.reserve(r.moves.size());
@@ -344,6 +373,7 @@ tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o
     prog.blocks.push_back(b);
     cur = m.to;
   }
+  if (o.tool) switch_tool_for_cuts(prog);
   return prog;
 }
 

@@ -28,6 +28,9 @@ struct FirstStageOptions {
   double feed_mm_min = 1000.0;
   bool zones = false;          // end chords at every joint (reference point), as the paper
   double budget_blu = 1.0;     // interpolator's own error, reserved from delta
+  // The tool output on for the cuts only (a laser, torch or pen): M03 with the first cut
+  // of every run of cuts, M05 with its last (make_program()).
+  bool tool = false;
 };
 
 enum class MoveKind { kLine, kArcCw, kArcCcw };
