@@ -50,7 +50,8 @@ inline CLI::Option* add_events_option(CLI::App* cmd, std::string& events) {
                          "The operator's actions in machine time, comma-separated: hold@Ts (feed "
                          "hold), resume@Ts or start@Ts (cycle start), override=P@Ts (feed override, "
                          "0-200 %), rapid-override=P@Ts (25, 50, 100 %), estop@Ts, limit-x@Ts, "
-                         "limit-y@Ts, e.g. hold@0.8s,resume@1.2s,override=50@1.5s "
+                         "limit-y@Ts, optional-stop=on@Ts or =off (M01 pauses while on), e.g. "
+                         "hold@0.8s,resume@1.2s,override=50@1.5s "
                          "(docs/motion-control.md)");
 }
 

@@ -161,6 +161,31 @@ TEST_F(PlayCli, EStopEndsBothEnginesAtItsClockWithExitFive) {
   EXPECT_EQ(files(), (std::vector<std::string>{"g.json", "p.json", "r.json", "r.vcd"}));
 }
 
+// M words: a tape that pauses at M00 with no cycle start ends there with exit 6 and status
+// "paused" on both engines; with a later start it plays to its end, at the position of the
+// tape without the pause, with the pause's clocks counted apart from the gaps and the tool
+// on between M03 and M05.
+TEST_F(PlayCli, APauseWithoutCycleStartEndsWithExitSixAndAStartGoesOn) {
+  std::ofstream(path("m.nc")) << "%\nG17 G21 G91 G93\nN1 G01 X2.000 Y1.000 F600.000 M03\nN2 M00\n"
+                                 "N3 G01 X-1.000 Y2.000 F600.000 M05\nM02\n%\n";
+  for (const char* engine : {"golden", "rtl"}) {
+    const std::string e = std::string(" --engine ") + engine;
+    ASSERT_EQ(play(path("m.nc") + e + " --report " + path("p.json")), 6) << stderr_;
+    EXPECT_NE(stdout_.find("paused after block N2"), std::string::npos) << stdout_;
+    const nlohmann::json p = nlohmann::json::parse(slurp(path("p.json")));
+    EXPECT_EQ(p["status"], "paused") << engine;
+    EXPECT_EQ(p["final_position_blu"]["x"], 2000) << engine;
+    ASSERT_EQ(play(path("m.nc") + e + " --events start@1s --report " + path("s.json")), 0) << stderr_;
+    const nlohmann::json s = nlohmann::json::parse(slurp(path("s.json")));
+    EXPECT_EQ(s["status"], "ok") << engine;
+    EXPECT_EQ(s["final_position_blu"]["x"], 1000) << engine;
+    EXPECT_EQ(s["final_position_blu"]["y"], 3000) << engine;
+    EXPECT_GT(s["paused_cycles"].get<uint64_t>(), 500000u) << engine;
+    EXPECT_LT(s["gap_cycles"].get<uint64_t>(), 1000u) << engine;
+    EXPECT_GT(s["tool_on_cycles"].get<uint64_t>(), s["paused_cycles"].get<uint64_t>()) << engine;
+  }
+}
+
 TEST_F(PlayCli, BadTapeGivesOneLineAnErrorReportAndNoVcd) {
   std::ifstream in(kGear);
   std::stringstream ss;

@@ -56,6 +56,25 @@ TEST(OperatorEvents, OverridesAreLevelsInUnitsOfAHundredAndTwentyEighth) {
   EXPECT_EQ(in.feed_override, 13);
 }
 
+// The optional stop switch is a level: on or off from its clock (FrameSource), read back by
+// events_text(); any other value is refused.
+TEST(OperatorEvents, TheOptionalStopSwitchIsALevel) {
+  const auto events = parse_events("optional-stop=off@0.5s,optional-stop=on@0s", 1e6);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, OperatorEvent::kOptionalStop);
+  EXPECT_EQ(events[0].value, 1);
+  EXPECT_EQ(events[1].value, 0);
+  EXPECT_FALSE(has_override(events));
+  EXPECT_EQ(events_text(events, 1e6), "optional-stop=on@0s,optional-stop=off@0.5s");
+  InterpInputs in;
+  EXPECT_FALSE(in.optional_stop);
+  press(in, events[0]);
+  EXPECT_TRUE(in.optional_stop);
+  EXPECT_NE(refusal("optional-stop=yes@1s").find("needs =on or =off"), std::string::npos);
+  EXPECT_NE(refusal("optional-stop@1s").find("needs =on or =off"), std::string::npos);
+  EXPECT_EQ(last_event_cycle(events), 500001u);
+}
+
 TEST(OperatorEvents, BadPercentagesAndOtherNamesAreRefusedNamingTheItem) {
   EXPECT_NE(refusal("override=250@1s").find("'override=250@1s' needs a percentage from 0 to 200"),
             std::string::npos);
