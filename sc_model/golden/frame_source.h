@@ -24,7 +24,10 @@ class FrameSource {
       : frames_(std::move(frames)),
         events_(std::move(events)),
         cycles_per_frame_(cycles_per_frame ? cycles_per_frame : 1),
-        countdown_(cycles_per_frame_ - 1) {}
+        countdown_(cycles_per_frame_ - 1) {
+    for (size_t k = 0; k < events_.size(); ++k)
+      if (events_[k].kind == OperatorEvent::kStart) starts_end_ = k + 1;
+  }
 
   // Cycles per frame for a reader of `chars_per_second` at `clock_hz` (at least 1).
   static uint64_t cycles_per_frame_for(double clock_hz, double chars_per_second) {
@@ -84,17 +87,14 @@ class FrameSource {
   // The run is over after outputs `o`: the program ended or stopped on an error, or it is
   // paused (M00, M01) and no cycle start press is still to come.
   bool run_over(const InterpOutputs& o) const {
-    if (o.done || o.error) return true;
-    if (!o.paused) return false;
-    for (size_t k = next_event_; k < events_.size(); ++k)
-      if (events_[k].kind == OperatorEvent::kStart) return false;
-    return true;
+    return o.done || o.error || (o.paused && next_event_ >= starts_end_);
   }
 
  private:
   std::vector<uint8_t> frames_;
   std::vector<OperatorEvent> events_;  // sorted by cycle
   size_t next_event_ = 0;              // the first not yet past
+  size_t starts_end_ = 0;              // after the last cycle start press (0: none)
   uint16_t feed_override_ = kOverrideOne, rapid_override_ = kOverrideOne;  // the levels set
   bool optional_stop_ = false;  // the optional stop switch
   uint64_t clocks_ = 0;                // edges so far: the current clock is clocks_ + 1

@@ -83,15 +83,9 @@ uint64_t GoldenInterp::quiet_ticks(const InterpInputs& in) const {
   const bool busy = out_.busy;
   const bool buffer_empty = !next_valid_;
   if (busy && player_done_) return 0;       // the block ends: a load, or busy falls
-  if (out_.paused) {
-    // Waiting for cycle start (not pressed: above): no load and no status; only the
-    // decoder may move.
-    if (!decoder_.quiet(in, buffer_empty)) return 0;
-    return fault_cycle_ == std::numeric_limits<uint64_t>::max()
-               ? std::numeric_limits<uint64_t>::max()
-               : (fault_cycle_ > cycle_ + 1 ? fault_cycle_ - cycle_ - 1 : 0);
-  }
-  if (!busy && !buffer_empty) return 0;     // a load (or the RAM read before it)
+  // A load (or the RAM read before it); none while paused (and then not busy: only the
+  // decoder may move, below).
+  if (!busy && !buffer_empty && !out_.paused) return 0;
   const State dstate = decoder_.state();
   if (!busy && buffer_empty && !out_.paused &&
       ((dstate == State::kError && !out_.error) ||

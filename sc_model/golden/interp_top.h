@@ -183,9 +183,13 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
       finishing && (after_stop_ || (after_optional_stop_ && in.optional_stop));
   const bool load = !buffer_empty && (!busy || (finishing && !pause)) && next_readable() &&
                     !stopped && !paused;
-  // The tool: off after an M05 block's motion, on at an M03 block's load (which wins).
-  bool tool = out_.tool && !(finishing && after_tool_off_);
-  if (load && next_.tool_on) tool = true;
+  // The M words act only at a block's end or load, or while paused (and the end of the
+  // program or an error clears them, below); most edges skip them. The tool: off after an
+  // M05 block's motion, on at an M03 block's load (which wins); read before load_block()
+  // latches the next block's words.
+  const bool m_edge = finishing || load || paused;
+  bool tool = out_.tool;
+  if (m_edge) tool = (tool && !(finishing && after_tool_off_)) || (load && next_.tool_on);
 
   out_.step_x = false;
   out_.step_y = false;
@@ -223,8 +227,10 @@ inline void GoldenInterp::tick(const InterpInputs& in) {
   if (stop_now) stop_edge(in);
   // The pause until cycle start, and the tool, end with the program (a stop, an error, or
   // its end).
-  out_.paused = (pause || (paused && !in.start)) && !out_.error;
-  out_.tool = tool && !out_.error && !out_.done;
+  if (m_edge || out_.error || out_.done) {
+    out_.paused = (pause || (paused && !in.start)) && !out_.error;
+    out_.tool = tool && !out_.error && !out_.done;
+  }
 }
 
 // The ramp's decision for the next clock (rtl/feed_generator.sv decides the same), from the

@@ -97,29 +97,27 @@ int run(const PlayArgs& a) {
               << " engine disagree about this tape"
               << (readback.error ? " (reader: " + tape::describe(*readback.error) + ")" : "") << "\n";
 
-  if (r.stopped()) {
-    std::printf("%s: %s in block N%llu at %.6g s, stopped at X%.3f Y%.3f mm\n", a.tape.c_str(),
-                tape_error_message(static_cast<TapeError>(r.summary.error_code)),
-                static_cast<unsigned long long>(r.summary.error_block),
-                report["simulated_seconds"].get<double>(),
+  // A run the operator's events ended short of the program's end (a stop, or a pause no
+  // cycle start resumes): one line, "TAPE: HEAD at T s, AT X.. Y.. mm TAIL", where the
+  // machine stands, and the outputs written.
+  const auto ended_short = [&](const std::string& head, const char* at, const char* tail, int status) {
+    std::printf("%s: %s at %.6g s%s X%.3f Y%.3f mm%s\n", a.tape.c_str(), head.c_str(),
+                report["simulated_seconds"].get<double>(), at,
                 static_cast<double>(r.summary.final_x) / std::pow(10.0, r.config.frac_digits),
-                static_cast<double>(r.summary.final_y) / std::pow(10.0, r.config.frac_digits));
+                static_cast<double>(r.summary.final_y) / std::pow(10.0, r.config.frac_digits), tail);
     if (r.vcd_written) std::printf("VCD: %s\n", a.vcd.c_str());
     if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
-    return kExitStopped;
-  }
-  if (r.summary.paused) {
-    std::printf("%s: paused after block N%llu at %.6g s (M00, or M01 with the optional stop on), "
-                "at X%.3f Y%.3f mm; no cycle start comes (--events start@Ts)\n",
-                a.tape.c_str(),
-                static_cast<unsigned long long>(r.summary.timeline.empty() ? 0 : r.summary.timeline.back().n),
-                report["simulated_seconds"].get<double>(),
-                static_cast<double>(r.summary.final_x) / std::pow(10.0, r.config.frac_digits),
-                static_cast<double>(r.summary.final_y) / std::pow(10.0, r.config.frac_digits));
-    if (r.vcd_written) std::printf("VCD: %s\n", a.vcd.c_str());
-    if (!a.report.empty()) std::printf("report: %s\n", a.report.c_str());
-    return kExitPaused;
-  }
+    return status;
+  };
+  if (r.stopped())
+    return ended_short(std::string(tape_error_message(static_cast<TapeError>(r.summary.error_code))) +
+                           " in block N" + std::to_string(r.summary.error_block),
+                       ", stopped at", "", kExitStopped);
+  if (r.summary.paused)
+    return ended_short("paused after block N" +
+                           std::to_string(r.summary.timeline.empty() ? 0 : r.summary.timeline.back().n),
+                       " (M00, or M01 with the optional stop on), at",
+                       "; no cycle start comes (--events start@Ts)", kExitPaused);
   if (const auto e = play_error(r, readback.error)) {
     std::cerr << a.tape << ": block N" << e->block << ", offset " << e->offset << ": "
               << e->message << "\n";

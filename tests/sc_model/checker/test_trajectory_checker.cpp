@@ -37,6 +37,13 @@ CheckSetup at_1mhz(Arch arch, double accel_mm_s2) {
   return setup;
 }
 
+// A random program of `blocks` lines of 12-bit moves, each 30 000 to 60 000 clocks long at
+// `setup`'s clock: the operator tests' tape.
+tape::Program operator_program(std::mt19937& rng, const CheckSetup& setup, int blocks) {
+  const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
+  return test::random_line_program(rng, blocks, 12, modulus, 30000, 60000);
+}
+
 std::string first_violation(const TrajectoryChecker& c) {
   if (c.violations().empty()) return "none";
   const Violation& v = c.violations().front();
@@ -128,8 +135,7 @@ TEST(TrajectoryChecker, BlocksWithTheSameNRampedOrHeldAreToldApartByTheirPulses)
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(14);
     CheckSetup setup = at_1mhz(arch, 0);
-    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
-    tape::Program p = test::random_line_program(rng, 8, 12, modulus, 30000, 60000);
+    tape::Program p = operator_program(rng, setup, 8);
     for (tape::Block& b : p.blocks) b.n = 7;
     for (const double accel : {500.0, 0.0}) {
       setup.accel_mm_s2 = accel;
@@ -160,8 +166,7 @@ TEST(TrajectoryChecker, PulsesWhileHeldFailTheHeldRule) {
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(13);
     CheckSetup setup = at_1mhz(arch, 500);
-    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
-    const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+    const tape::Program p = operator_program(rng, setup, 6);
     setup.events = {{50000, OperatorEvent::kHold}, {250000, OperatorEvent::kStart}};
     const CheckOutcome held = run_check(frames_of(p), nullptr, setup);
     ASSERT_TRUE(held.passed()) << arch_name(arch) << ": " << first_violation(*held.checker);
@@ -206,8 +211,7 @@ TEST(TrajectoryChecker, ToolOutputFollowsTheTapesM03AndM05) {
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(17);
     CheckSetup setup = at_1mhz(arch, 500);
-    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
-    tape::Program p = test::random_line_program(rng, 5, 12, modulus, 30000, 60000);
+    tape::Program p = operator_program(rng, setup, 5);
     p.blocks[1].tool_on = true;
     p.blocks[3].tool_off = true;
     tape::Block pause{p.blocks[2].n, tape::Motion::kRapid};
@@ -246,8 +250,7 @@ TEST(TrajectoryChecker, OverriddenRunsPassAndAFasterOneFailsTheDurationRuleUntol
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     std::mt19937 rng(15);
     CheckSetup setup = at_1mhz(arch, 500);
-    const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
-    const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+    const tape::Program p = operator_program(rng, setup, 6);
     const std::vector<std::vector<OperatorEvent>> lists = {
         {{1, OperatorEvent::kFeedOverride, 256}},
         {{1, OperatorEvent::kFeedOverride, 38}},
@@ -280,8 +283,7 @@ TEST(TrajectoryChecker, StopsEndTheRunAtTheirClockAndPulsesAfterOneFailTheStopRu
     for (double accel : {0.0, 500.0}) {
       std::mt19937 rng(17);
       CheckSetup setup = at_1mhz(arch, accel);
-      const uint64_t modulus = interp_config(setup.clock_hz, setup.format).feed_modulus;
-      const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
+      const tape::Program p = operator_program(rng, setup, 6);
       setup.events = {{90001, OperatorEvent::kLimitY}};
       const CheckOutcome stopped = run_check(frames_of(p), nullptr, setup);
       const std::string what = std::string(arch_name(arch)) + (accel > 0 ? " ramped" : "");
