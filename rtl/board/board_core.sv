@@ -21,7 +21,8 @@
 // by), the FIFO level and the received bytes to the board simulation; a real board leaves
 // them unconnected, and synthesis removes what only they read. Static configuration comes
 // in on ports (the board tops tie them to constants): bit_cycles_i clocks per UART bit,
-// feed_modulus_i, rapid_step_i, and the stretchers' clock counts.
+// feed_modulus_i, rapid_step_i, accel_step_i (the feed ramp's step; 0: no ramp), and the
+// stretchers' clock counts.
 // Timing: every output is a register or a function of registers.
 // Golden twins: GoldenInterp for interp_top (board-sim compares nothing itself: it replays
 // the outputs into the play monitors), the UART and stretcher models of sc_model/board/.
@@ -44,6 +45,8 @@ module board_core #(
   parameter bit CircleMode = 1'b1,
   // M00, M01, M03 and M05 (interp_top's MiscFunctions): the iCEstick's core has no room.
   parameter bit MiscFunctions = 1'b1,
+  // The feed ramp (interp_top's Accel): the iCEstick's core has no room for it either.
+  parameter bit Accel = 1'b1,
   // The interpolator's widths on the board (+-524 mm of travel at 1 um, N and the frame
   // offset below 2^20), as the golden model's board configuration has them
   // (sc_model/board/boards.cpp); the status line sends their low bits.
@@ -58,6 +61,7 @@ module board_core #(
   input  logic [DivWidth-1:0] bit_cycles_i,
   input  logic [ModulusWidth-1:0] feed_modulus_i,
   input  logic [ModulusWidth-1:0] rapid_step_i,
+  input  logic [ModulusWidth-1:0] accel_step_i,
   input  logic [StretchWidth-1:0] setup_cycles_i,
   input  logic [StretchWidth-1:0] pulse_cycles_i,
   input  logic [StretchWidth-1:0] low_cycles_i,
@@ -150,16 +154,15 @@ module board_core #(
   assign frame_valid = fifo_valid && !eot && !tape_end_q;
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
-  // The boards have no feed ramp yet (docs/motion-control.md): Accel = 0 builds none of it.
-  // Nor a cycle start button: start_i is held pressed, so a pause (M00, M01) ends at the
-  // clock after it and the program goes on.
+  // The boards have no cycle start button yet: start_i is held pressed, so a pause (M00,
+  // M01) ends at the clock after it and the program goes on.
   interp_top #(
     .BitSerial(BitSerial), .CircleMode(CircleMode), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
-    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .Accel(1'b0),
+    .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .Accel(Accel),
     .MiscFunctions(MiscFunctions)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i, .rapid_step_i, .accel_step_i('0), .hold_i(1'b0), .start_i(1'b1),
+    .feed_modulus_i, .rapid_step_i, .accel_step_i, .hold_i(1'b0), .start_i(1'b1),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
     .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),

@@ -25,12 +25,15 @@ module board_top #(
   parameter int     DirHoldNs  = 1_000,
   // The iCEBreaker's LEDs light on a low pin, the iCEstick's on a high one.
   parameter int     LedActiveLow = 0,
-  // The interpolator's configuration (interp_top's BitSerial, CircleMode, MiscFunctions).
+  // The interpolator's configuration (interp_top's BitSerial, CircleMode, MiscFunctions;
+  // AccelMmS2 below is its Accel).
   parameter bit     BitSerial  = 1'b1,
   parameter bit     CircleMode = 1'b1,
   parameter bit     MiscFunctions = 1'b1,
   // The machine's rapid rate (G00), mm/min.
-  parameter int     RapidMmMin = 5000
+  parameter int     RapidMmMin = 5000,
+  // The feed ramp's acceleration limit, mm/s^2 (docs/motion-control.md); 0 builds no ramp.
+  parameter int     AccelMmS2  = 500
 ) (
   input  logic clk_i,
   input  logic uart_rx_i,
@@ -61,6 +64,9 @@ module board_top #(
   localparam int     ModulusWidth = $clog2(FeedModulus + 1);
   // rapid_step_i: the rapid rate in BLU/min (FracDigits 3) times 10^3 (FeedFracDigits 3).
   localparam longint RapidStep    = 64'(RapidMmMin) * 64'd1_000_000;
+  // accel_step_i: du = A 10^FracDigits M / f^2, rounded down (InterpConfig::accel_step_for()).
+  localparam longint AccelStep    = 64'(AccelMmS2) * 64'd1_000 * FeedModulus /
+                                    (64'(ClockHz) * 64'(ClockHz));
   // The UART's bit counter and the stretchers' counters as wide as these constants (their
   // ports carry them): 7 and 5 bits at 12 MHz, 115 200 baud and the default timing.
   localparam int DivWidth     = $clog2(32'(BitCycles) + 1);
@@ -82,12 +88,12 @@ module board_top #(
   /* verilator lint_off PINCONNECTEMPTY */
   board_core #(
     .BitSerial(BitSerial), .CircleMode(CircleMode), .MiscFunctions(MiscFunctions),
-    .ModulusWidth(ModulusWidth),
+    .Accel(AccelMmS2 != 0), .ModulusWidth(ModulusWidth),
     .DivWidth(DivWidth), .StretchWidth(StretchWidth)
   ) u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
     .bit_cycles_i(DivWidth'(BitCycles)), .feed_modulus_i(ModulusWidth'(FeedModulus)),
-    .rapid_step_i(ModulusWidth'(RapidStep)),
+    .rapid_step_i(ModulusWidth'(RapidStep)), .accel_step_i(ModulusWidth'(AccelStep)),
     .setup_cycles_i(StretchWidth'(SetupCycles)), .pulse_cycles_i(StretchWidth'(PulseCycles)),
     .low_cycles_i(StretchWidth'(LowCycles)),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),

@@ -108,6 +108,7 @@ class Runner {
     m.bit_cycles_i = c.bit_cycles;
     m.feed_modulus_i = c.feed_modulus;
     m.rapid_step_i = cfg.rapid_step;
+    m.accel_step_i = cfg.accel_step;
     m.setup_cycles_i = c.setup_cycles;
     m.pulse_cycles_i = c.pulse_cycles;
     m.low_cycles_i = c.low_cycles;
@@ -279,9 +280,8 @@ template <>
 void Runner<Vboard_icebreaker>::trace(Vboard_icebreaker&) {}
 
 template <class Model>
-BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, Pty& pty, VerilatedVcdC* vcd,
-                        const std::string& vcd_path) {
-  const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz);
+BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, const InterpConfig& cfg, Pty& pty,
+                        VerilatedVcdC* vcd, const std::string& vcd_path) {
   Runner<Model> runner(o, c, cfg, pty, vcd, vcd_path);
   const auto t0 = std::chrono::steady_clock::now();
   BoardSimResult r = runner.run();
@@ -291,6 +291,7 @@ BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, Pty& pty,
   p.summary.cycles = std::max(p.summary.cycles, runner.cycles());
   p.config = cfg;
   p.clock_hz = o.clock_hz;
+  p.accel_mm_s2 = o.accel_mm_s2 < 0 ? board_named(o.board).accel_mm_s2 : o.accel_mm_s2;
   p.reader_cps = o.baud / 10.0;
   p.cycles_per_frame = 10ull * c.bit_cycles;
   p.frames = r.frames.size();
@@ -331,6 +332,7 @@ BoardSimResult run_board_sim(const BoardSimOptions& o,
   // The board core of the board's configuration (sc_model/board/CMakeLists.txt).
   const bool circle_mode = board_named(o.board).circle_mode;
   const CoreConfig c = core_config(o);
+  const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz, o.accel_mm_s2);
   std::unique_ptr<AtomicOutputFile> vcd_file;
   std::unique_ptr<VerilatedVcdC> vcd;
   if (!o.vcd_path.empty()) vcd_file = std::make_unique<AtomicOutputFile>(o.vcd_path);
@@ -338,10 +340,10 @@ BoardSimResult run_board_sim(const BoardSimOptions& o,
   if (on_ready) on_ready(o.pty_link);
   if (vcd_file) vcd = std::make_unique<VerilatedVcdC>();
   BoardSimResult r =
-      vcd_file ? (circle_mode ? run_with<Vboard_icebreaker_trace>(o, c, pty, vcd.get(), vcd_file->temp_path())
-                              : run_with<Vboard_icestick_trace>(o, c, pty, vcd.get(), vcd_file->temp_path()))
-               : (circle_mode ? run_with<Vboard_icebreaker>(o, c, pty, nullptr, "")
-                              : run_with<Vboard_icestick>(o, c, pty, nullptr, ""));
+      vcd_file ? (circle_mode ? run_with<Vboard_icebreaker_trace>(o, c, cfg, pty, vcd.get(), vcd_file->temp_path())
+                              : run_with<Vboard_icestick_trace>(o, c, cfg, pty, vcd.get(), vcd_file->temp_path()))
+               : (circle_mode ? run_with<Vboard_icebreaker>(o, c, cfg, pty, nullptr, "")
+                              : run_with<Vboard_icestick>(o, c, cfg, pty, nullptr, ""));
   if (vcd) {
     vcd->close();
     if (r.play.ok()) vcd_file->commit();

@@ -31,6 +31,7 @@ enum class Flow { kRtsCts, kXonXoff };
 
 struct BoardSimOptions {
   std::string board = "icestick";
+  double accel_mm_s2 = -1;    // the feed ramp's limit; < 0: the board's own, 0: none
   double clock_hz = 12e6;
   unsigned baud = 115200;
   Flow flow = Flow::kRtsCts;

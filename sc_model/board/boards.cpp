@@ -7,10 +7,12 @@ namespace ncinterp::board {
 
 const std::vector<Board>& boards() {
   // The iCEstick's FTDI channel B has CTS wired; the iCEBreaker's has only RX and TX. The
-  // iCEstick's HX1K has room for neither arcs nor the M words (docs/board.md).
+  // iCEstick's HX1K has room for neither arcs, the M words nor the feed ramp
+  // (docs/board.md); the iCEBreaker ramps at 500 mm/s^2, what a small stepper machine
+  // takes (docs/motion-control.md 7).
   static const std::vector<Board> list = {
-      {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, false, "rtscts", Arch::kSerial, false, false},
-      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, true, "xonxoff", Arch::kSerial, true, true},
+      {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, false, "rtscts", Arch::kSerial, false, false, 0},
+      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, true, "xonxoff", Arch::kSerial, true, true, 500},
   };
   return list;
 }
@@ -27,8 +29,11 @@ const Board& board_named(const std::string& name) {
   throw std::invalid_argument("unknown board '" + name + "' (" + board_names() + ")");
 }
 
-InterpConfig board_interp_config(const Board& b, double clock_hz) {
-  InterpConfig cfg = interp_config(clock_hz);
+InterpConfig board_interp_config(const Board& b, double clock_hz, double accel_mm_s2) {
+  if (accel_mm_s2 < 0) accel_mm_s2 = b.accel_mm_s2;
+  if (accel_mm_s2 > 0 && b.accel_mm_s2 == 0)
+    throw std::invalid_argument("--accel: the " + b.name + "'s core is built without the feed ramp (docs/board.md)");
+  InterpConfig cfg = interp_config(clock_hz, {}, kDefaultRapidMmMin, accel_mm_s2);
   cfg.arch = b.arch;
   cfg.circle_mode = b.circle_mode;
   cfg.misc_functions = b.misc_functions;

@@ -24,6 +24,8 @@ struct Board {
   Arch arch = Arch::kSerial;   // board_top's BitSerial
   bool circle_mode = true;     // board_top's CircleMode
   bool misc_functions = true;  // board_top's MiscFunctions (M00, M01, M03, M05)
+  // board_top's AccelMmS2: the feed ramp's acceleration limit, mm/s^2; 0: no ramp built.
+  double accel_mm_s2 = 0;
 };
 
 const std::vector<Board>& boards();
@@ -33,8 +35,9 @@ const Board& board_named(const std::string& name);
 std::string board_names();
 
 // The interpolator as board_core builds it for the board at clock_hz: its arch, circle
-// mode and miscellaneous functions, and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
+// mode, miscellaneous functions and feed ramp (accel_mm_s2 < 0: the board's own limit;
+// 0: no ramp; refused where the board has none), and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
 // sends their low bits, sc_model/board/status_text.h).
-InterpConfig board_interp_config(const Board& b, double clock_hz);
+InterpConfig board_interp_config(const Board& b, double clock_hz, double accel_mm_s2 = -1);
 
 }  // namespace ncinterp::board

@@ -64,6 +64,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--vcd", o.vcd_path, "Write the board core's waves (VCD) to this file");
   cmd->add_option("--clock-hz", o.clock_hz, "Board clock, Hz (the boards: 12e6)")->capture_default_str();
   cmd->add_option("--baud", o.baud, "UART baud rate")->capture_default_str();
+  cmd->add_option("--accel", o.accel_mm_s2,
+                  "The feed ramp's acceleration limit, mm/s^2 (default: the board's, 500 on the "
+                  "iCEBreaker; 0: no ramp; the iCEstick's core has none)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--flow", args->flow, "Flow control the USB-serial chip honours: rtscts or xonxoff "
                                         "(default: rtscts on the iCEstick, xonxoff on the iCEBreaker)")
       ->check(CLI::IsMember({"rtscts", "xonxoff"}));

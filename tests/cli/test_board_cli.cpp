@@ -141,6 +141,29 @@ TEST_F(BoardCli, XonXoffFlowControlLosesNoFrame) {
   EXPECT_EQ(board_["frames_read"], p["frames"]);
 }
 
+// The iCEBreaker's core ramps at 500 mm/s^2 (its bitstream's AccelMmS2): a line of 2^15
+// iterations at F60 has the rate S = 60000 * 2^15, which the ramp reaches in S / du =
+// 65 536 clocks at du = 30 000 (1 MHz): its trapezoid makes the block that much longer
+// than without the ramp, a little less with the ramp's discrete steps, with the same
+// pulses. The iCEstick's core has no ramp and says so.
+TEST_F(BoardCli, TheIcebreakerRampsEveryBlockWithTheSamePulses) {
+  { std::ofstream(path("line.nc")) << "%\nG17 G21 G91 G93\nN1 G01 X20.000 Y5.000 F60.000\nM02\n%\n"; }
+  const nlohmann::json p = play(path("line.nc"));
+  ASSERT_EQ(send_to_board(path("line.nc"), "--board icebreaker --accel 0", ""), 0) << send_err_ << board_err_;
+  const nlohmann::json unramped = board_;
+  ASSERT_EQ(send_to_board(path("line.nc"), "--board icebreaker", ""), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  EXPECT_EQ(board_["accel_mm_s2"], 500);
+  EXPECT_EQ(unramped["pulses"], board_["pulses"]);
+  const double longer_s = (board_["cycles"].get<double>() - unramped["cycles"].get<double>()) / 1e6;
+  EXPECT_GT(longer_s, 0.060);
+  EXPECT_LE(longer_s, 0.065536);
+  EXPECT_EQ(run("board-sim --board icestick --accel 100 --pty " + path("tty2")), 1);
+  EXPECT_NE(stderr_.find("the icestick's core is built without the feed ramp"), std::string::npos) << stderr_;
+  EXPECT_FALSE(fs::exists(path("tty2")));
+}
+
 TEST_F(BoardCli, ShortBlocksTheLineCannotKeepAheadOfLoseNoFrame) {
   // 300 one-step blocks at a high feed: each plays in far less time than its ~30 frames
   // take on the line, so the interpolator waits for the reader (gaps), never the reverse.
