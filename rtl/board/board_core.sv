@@ -2,7 +2,8 @@
 // LEDs and status lines; everything of a board except its pins and its clock/reset.
 //
 // What: uart_rx -> byte_fifo -> interp_top (rtl/interp_top.sv) -> step_stretcher per axis,
-// and status_line on the TX line. Each received byte is one tape frame (bit 7 = ISO 840
+// and status_line on the TX line; operator_pins brings the operator's buttons and switches
+// to interp_top. Each received byte is one tape frame (bit 7 = ISO 840
 // parity). The EOT frame (interp_pkg::LinkEndOfTape) ends the tape: it drives interp_top's
 // tape_end_i, so the program is done after M02/M30, and a tape cut short before that is an
 // error, as on a real reader. Flow control (docs/board.md): cts_no (to the host UART's
@@ -47,6 +48,12 @@ module board_core #(
   parameter bit MiscFunctions = 1'b1,
   // The feed ramp (interp_top's Accel): the iCEstick's core has no room for it either.
   parameter bit Accel = 1'b1,
+  // The operator's pins (operator_pins.sv): feed hold and cycle start buttons, E-stop,
+  // limit and optional stop switches. Without them (the iCEstick) nothing stops the
+  // machine but reset, and cycle start is held pressed: a pause ends at once.
+  parameter bit OperatorPins = 1'b1,
+  // The buttons' debounce sample period, 2^DebounceWidth clocks (5.5 ms at 12 MHz).
+  parameter int DebounceWidth = 16,
   // The interpolator's widths on the board (+-524 mm of travel at 1 um, N and the frame
   // offset below 2^20), as the golden model's board configuration has them
   // (sc_model/board/boards.cpp); the status line sends their low bits.
@@ -65,6 +72,13 @@ module board_core #(
   input  logic [StretchWidth-1:0] setup_cycles_i,
   input  logic [StretchWidth-1:0] pulse_cycles_i,
   input  logic [StretchWidth-1:0] low_cycles_i,
+  // The operator's pins, active high (pressed, tripped, on), asynchronous.
+  input  logic        hold_i,
+  input  logic        start_i,
+  input  logic        estop_i,
+  input  logic        limit_x_i,
+  input  logic        limit_y_i,
+  input  logic        optional_stop_i,
   // UART to the host.
   input  logic        rx_i,
   output logic        tx_o,
@@ -154,17 +168,30 @@ module board_core #(
   assign frame_valid = fifo_valid && !eot && !tape_end_q;
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
-  // The boards have no cycle start button yet: start_i is held pressed, so a pause (M00,
-  // M01) ends at the clock after it and the program goes on.
+  logic op_hold, op_start, op_estop, op_limit_x, op_limit_y, op_optional_stop;
+  if (OperatorPins) begin : g_pins
+    operator_pins #(.DebounceWidth(DebounceWidth)) u_pins (
+      .clk_i, .rst_ni, .hold_i, .start_i, .estop_i, .limit_x_i, .limit_y_i, .optional_stop_i,
+      .hold_o(op_hold), .start_o(op_start), .estop_o(op_estop), .limit_x_o(op_limit_x),
+      .limit_y_o(op_limit_y), .optional_stop_o(op_optional_stop)
+    );
+  end else begin : g_no_pins
+    assign {op_hold, op_estop, op_limit_x, op_limit_y, op_optional_stop} = '0;
+    assign op_start = 1'b1;
+    logic unused_pins;
+    assign unused_pins = &{1'b0, hold_i, start_i, estop_i, limit_x_i, limit_y_i, optional_stop_i};
+  end
+
   interp_top #(
     .BitSerial(BitSerial), .CircleMode(CircleMode), .PosWidth(PosWidth), .SeqWidth(SeqWidth),
     .OffsetWidth(OffsetWidth), .ModulusWidth(ModulusWidth), .Accel(Accel),
     .MiscFunctions(MiscFunctions)
   ) u_interp (
     .clk_i, .rst_ni,
-    .feed_modulus_i, .rapid_step_i, .accel_step_i, .hold_i(1'b0), .start_i(1'b1),
+    .feed_modulus_i, .rapid_step_i, .accel_step_i, .hold_i(op_hold), .start_i(op_start),
     .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
-    .estop_i(1'b0), .limit_x_i(1'b0), .limit_y_i(1'b0), .optional_stop_i(1'b0),
+    .estop_i(op_estop), .limit_x_i(op_limit_x), .limit_y_i(op_limit_y),
+    .optional_stop_i(op_optional_stop),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),
     .frame_ready_o(frame_ready),
     .step_x_o(i_step_x), .dir_x_o(i_dir_x), .step_y_o(i_step_y), .dir_y_o(i_dir_y),

@@ -33,7 +33,12 @@ module board_top #(
   // The machine's rapid rate (G00), mm/min.
   parameter int     RapidMmMin = 5000,
   // The feed ramp's acceleration limit, mm/s^2 (docs/motion-control.md); 0 builds no ramp.
-  parameter int     AccelMmS2  = 500
+  parameter int     AccelMmS2  = 500,
+  // The operator's pins (board_core's OperatorPins), and which of them are active high (a
+  // button with a pull-down), in the order {optional stop, limit y, limit x, E-stop, start,
+  // hold}; the others are active low (a contact to GND, the pin's pull-up in the .pcf).
+  parameter bit     OperatorPins = 1'b1,
+  parameter logic [5:0] OperatorActiveHigh = 6'b000111
 ) (
   input  logic clk_i,
   input  logic uart_rx_i,
@@ -44,6 +49,13 @@ module board_top #(
   output logic step_y_o,
   output logic dir_y_o,
   output logic tool_o,
+  // The operator's buttons and switches (OperatorActiveHigh says each one's polarity).
+  input  logic hold_pin_i,
+  input  logic start_pin_i,
+  input  logic estop_pin_i,
+  input  logic limit_x_pin_i,
+  input  logic limit_y_pin_i,
+  input  logic optional_stop_pin_i,
   output logic led_busy_o,
   output logic led_done_o,
   output logic led_error_o
@@ -85,10 +97,15 @@ module board_top #(
   assign led_done_o  = led_done ^ LedLow;
   assign led_error_o = led_error ^ LedLow;
 
+  // The pins as board_core takes them: high when pressed, tripped or on.
+  logic [5:0] operator;
+  assign operator = {optional_stop_pin_i, limit_y_pin_i, limit_x_pin_i, estop_pin_i, start_pin_i,
+                     hold_pin_i} ~^ OperatorActiveHigh;
+
   /* verilator lint_off PINCONNECTEMPTY */
   board_core #(
     .BitSerial(BitSerial), .CircleMode(CircleMode), .MiscFunctions(MiscFunctions),
-    .Accel(AccelMmS2 != 0), .ModulusWidth(ModulusWidth),
+    .Accel(AccelMmS2 != 0), .OperatorPins(OperatorPins), .ModulusWidth(ModulusWidth),
     .DivWidth(DivWidth), .StretchWidth(StretchWidth)
   ) u_core (
     .clk_i, .rst_ni(por_q == 4'hf),
@@ -96,6 +113,8 @@ module board_top #(
     .rapid_step_i(ModulusWidth'(RapidStep)), .accel_step_i(ModulusWidth'(AccelStep)),
     .setup_cycles_i(StretchWidth'(SetupCycles)), .pulse_cycles_i(StretchWidth'(PulseCycles)),
     .low_cycles_i(StretchWidth'(LowCycles)),
+    .hold_i(operator[0]), .start_i(operator[1]), .estop_i(operator[2]), .limit_x_i(operator[3]),
+    .limit_y_i(operator[4]), .optional_stop_i(operator[5]),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o, .tool_o,
     .led_busy_o(led_busy), .led_done_o(led_done), .led_error_o(led_error),

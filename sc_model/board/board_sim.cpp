@@ -7,6 +7,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include "Vboard_icestick_trace.h"
 #include "boards.h"
 #include "atomic_file.h"
+#include "operator_pins_model.h"
 #include "play_monitor.h"
 #include "play_report.h"
 #include "status_text.h"
@@ -91,6 +93,24 @@ InterpOutputs interp_outputs(const Model& m, const InterpConfig& cfg) {
   return o;
 }
 
+// board_core's DebounceWidth (the boards' buttons are sampled every 2^16 clocks).
+constexpr unsigned kBoardDebounceWidth = 16;
+
+// The pin an event presses. Throws std::invalid_argument for an override (no pin).
+int operator_pin(OperatorEvent::Kind kind) {
+  switch (kind) {
+    case OperatorEvent::kHold: return kPinHold;
+    case OperatorEvent::kStart: return kPinStart;
+    case OperatorEvent::kEStop: return kPinEStop;
+    case OperatorEvent::kLimitX: return kPinLimitX;
+    case OperatorEvent::kLimitY: return kPinLimitY;
+    case OperatorEvent::kOptionalStop: return kPinOptionalStop;
+    default: break;
+  }
+  throw std::invalid_argument(
+      "--events: the boards take no override yet: they have no pins for one (docs/motion-control.md)");
+}
+
 template <class Model>
 class Runner {
  public:
@@ -133,7 +153,34 @@ class Runner {
     const uint64_t byte_cycles = 10ull * c_.bit_cycles;
     uint64_t final_deadline = 0;
 
+    size_t next_event = 0;
+    std::array<bool, kOperatorPins> pins{};
+    uint64_t release_at[kOperatorPins] = {};
+    size_t last_start = o_.events.size();  // the last cycle start press (none: size())
+    for (size_t i = 0; i < o_.events.size(); ++i)
+      if (o_.events[i].kind == OperatorEvent::kStart) last_start = i;
+
     while (!final_line) {
+      // The operator's pins at this clock.
+      for (int p : {kPinHold, kPinStart})
+        if (pins[p] && cycle_ >= release_at[p]) pins[p] = false;
+      for (; next_event < o_.events.size() && o_.events[next_event].cycle <= cycle_; ++next_event) {
+        const OperatorEvent& e = o_.events[next_event];
+        const int pin = operator_pin(e.kind);
+        pins[pin] = e.kind != OperatorEvent::kOptionalStop || e.value != 0;
+        release_at[pin] = cycle_ + (3ull << kBoardDebounceWidth);
+      }
+      m.hold_i = pins[kPinHold];
+      m.start_i = pins[kPinStart];
+      m.estop_i = pins[kPinEStop];
+      m.limit_x_i = pins[kPinLimitX];
+      m.limit_y_i = pins[kPinLimitY];
+      m.optional_stop_i = pins[kPinOptionalStop];
+      if (last.paused && (last_start == o_.events.size() || (next_event > last_start && !pins[kPinStart]))) {
+        r.paused = true;  // no cycle start to come: the program waits for good
+        break;
+      }
+
       // The sender's bytes: read when the wire has none waiting (at most once a byte time).
       if (in.empty() && cycle_ % byte_cycles == 0) {
         const bool board_idle = !last.busy && m.obs_fifo_level_o == 0 && host_tx.ready();
@@ -288,6 +335,7 @@ BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, const Int
   r.readback = tape::parse_frames_partial(r.frames, tape_format_of(cfg));
   system::PlayResult& p = r.play;
   p.summary = runner.replay(r.readback.program);
+  p.summary.paused = r.paused;
   p.summary.cycles = std::max(p.summary.cycles, runner.cycles());
   p.config = cfg;
   p.clock_hz = o.clock_hz;
@@ -333,6 +381,9 @@ BoardSimResult run_board_sim(const BoardSimOptions& o,
   const bool circle_mode = board_named(o.board).circle_mode;
   const CoreConfig c = core_config(o);
   const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz, o.accel_mm_s2);
+  if (!o.events.empty() && !board_named(o.board).operator_pins)
+    throw std::invalid_argument("--events: the " + o.board + "'s core is built without the operator's pins (docs/board.md)");
+  for (const OperatorEvent& e : o.events) operator_pin(e.kind);
   std::unique_ptr<AtomicOutputFile> vcd_file;
   std::unique_ptr<VerilatedVcdC> vcd;
   if (!o.vcd_path.empty()) vcd_file = std::make_unique<AtomicOutputFile>(o.vcd_path);

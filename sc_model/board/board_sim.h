@@ -14,6 +14,10 @@
 // sent its "D" (done) or "E" (error) status line; the interpolator's outputs are recorded
 // (only their changes) and replayed into the play monitors once the program is known: the
 // frames the board received, read back by the software tape reader.
+// The operator's events (--events) drive the board's pins (rtl/board/operator_pins.sv): a
+// button is held down for three of its debounce sample periods from the event's clock, a
+// stop switch stays tripped, the optional stop switch keeps its level. A run that pauses
+// (M00, M01) with no cycle start to come ends there.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -22,6 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "operator_events.h"
 #include "play_run.h"
 #include "tape.h"
 
@@ -32,6 +37,7 @@ enum class Flow { kRtsCts, kXonXoff };
 struct BoardSimOptions {
   std::string board = "icestick";
   double accel_mm_s2 = -1;    // the feed ramp's limit; < 0: the board's own, 0: none
+  std::vector<OperatorEvent> events;  // on the board's pins (no overrides: no pins for them)
   double clock_hz = 12e6;
   unsigned baud = 115200;
   Flow flow = Flow::kRtsCts;
@@ -54,6 +60,7 @@ struct BoardSimResult {
   uint64_t xoff_sent = 0;               // XOFF bytes the board sent
   uint16_t bit_cycles = 0;
   bool timed_out = false;               // the sender went quiet before the end
+  bool paused = false;                  // paused with no cycle start to come
 };
 
 // The static configuration board_top computes from its parameters, for a clock and baud.

@@ -26,6 +26,8 @@ struct Board {
   bool misc_functions = true;  // board_top's MiscFunctions (M00, M01, M03, M05)
   // board_top's AccelMmS2: the feed ramp's acceleration limit, mm/s^2; 0: no ramp built.
   double accel_mm_s2 = 0;
+  // board_top's OperatorPins: feed hold, cycle start, E-stop, limit and optional stop pins.
+  bool operator_pins = false;
 };
 
 const std::vector<Board>& boards();

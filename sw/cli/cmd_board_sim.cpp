@@ -4,8 +4,10 @@
 // `ncinterp send TAPE --port PATH` (or any serial program) talks to it.
 // Ends when the board reports the program done or an error (or the sender stays silent
 // longer than --idle-timeout): writes the report (play's JSON fields plus "board") and, for
-// a run that played to its end, the VCD; exit 0 when the program played to its end, 1
-// otherwise (with the board's error on stderr).
+// a run that played to its end, the VCD; exit 0 when the program played to its end, 5 when
+// an E-stop or a limit of --events stopped it, 6 when it paused with no cycle start to
+// come (as play), 1 otherwise (with the board's error on stderr).
+// --events drives the board's operator pins (board_sim.h).
 #include <cstdio>
 #include <iostream>
 
@@ -13,6 +15,7 @@
 #include "board_sim.h"
 #include "boards.h"
 #include "command_registry.h"
+#include "machine_options.h"
 
 namespace ncinterp::cli {
 namespace {
@@ -21,12 +24,14 @@ struct BoardSimArgs {
   board::BoardSimOptions options;
   std::string flow;
   std::string report;
+  std::string events;
 };
 
 int run(BoardSimArgs& a) {
   board::BoardSimOptions& o = a.options;
   if (a.flow.empty()) a.flow = board::board_named(o.board).flow;
   o.flow = a.flow == "rtscts" ? board::Flow::kRtsCts : board::Flow::kXonXoff;
+  o.events = parse_events(a.events, o.clock_hz);
   const board::BoardSimResult r = board::run_board_sim(o, [&](const std::string& path) {
     std::printf("board-sim: %s on %s (%g Hz, %u baud, %s)\n", o.board.c_str(), path.c_str(), o.clock_hz,
                 o.baud, a.flow.c_str());
@@ -38,6 +43,13 @@ int run(BoardSimArgs& a) {
   if (!r.status_lines.empty())
     std::printf("board: %zu status lines, the last \"%s\"\n", r.status_lines.size(),
                 r.status_lines.back().c_str());
+  const system::PlaySummary& s = r.play.summary;
+  if (r.play.stopped() || s.paused) {
+    std::printf("board-sim: %s in block N%u, at X%lld Y%lld BLU\n", r.play.stopped() ? "stopped" : "paused",
+                r.play.stopped() ? s.error_block : s.timeline.empty() ? 0u : s.timeline.back().n,
+                static_cast<long long>(s.final_x), static_cast<long long>(s.final_y));
+    return r.play.stopped() ? kExitStopped : kExitPaused;
+  }
   if (report["status"] != "ok") {
     std::cerr << "board-sim: "
               << (report.contains("error") ? report["error"].value("message", std::string("error"))
@@ -68,6 +80,7 @@ void setup(CLI::App& app) {
                   "The feed ramp's acceleration limit, mm/s^2 (default: the board's, 500 on the "
                   "iCEBreaker; 0: no ramp; the iCEstick's core has none)")
       ->check(CLI::NonNegativeNumber);
+  add_events_option(cmd, args->events);
   cmd->add_option("--flow", args->flow, "Flow control the USB-serial chip honours: rtscts or xonxoff "
                                         "(default: rtscts on the iCEstick, xonxoff on the iCEBreaker)")
       ->check(CLI::IsMember({"rtscts", "xonxoff"}));

@@ -80,6 +80,11 @@ class BoardCli : public ncinterp::test::CliTest {
     EXPECT_EQ(board_["path_within_bound"], p["path_within_bound"]);
   }
 
+  // line.nc: one 20 mm line that lasts a second (F60, inverse time).
+  void write_line_tape() {
+    std::ofstream(path("line.nc")) << "%\nG17 G21 G91 G93\nN1 G01 X20.000 Y5.000 F60.000\nM02\n%\n";
+  }
+
   pid_t board_pid_ = 0;
   int board_code_ = -1;
   nlohmann::json board_;
@@ -147,7 +152,7 @@ TEST_F(BoardCli, XonXoffFlowControlLosesNoFrame) {
 // than without the ramp, a little less with the ramp's discrete steps, with the same
 // pulses. The iCEstick's core has no ramp and says so.
 TEST_F(BoardCli, TheIcebreakerRampsEveryBlockWithTheSamePulses) {
-  { std::ofstream(path("line.nc")) << "%\nG17 G21 G91 G93\nN1 G01 X20.000 Y5.000 F60.000\nM02\n%\n"; }
+  write_line_tape();
   const nlohmann::json p = play(path("line.nc"));
   ASSERT_EQ(send_to_board(path("line.nc"), "--board icebreaker --accel 0", ""), 0) << send_err_ << board_err_;
   const nlohmann::json unramped = board_;
@@ -161,6 +166,44 @@ TEST_F(BoardCli, TheIcebreakerRampsEveryBlockWithTheSamePulses) {
   EXPECT_LE(longer_s, 0.065536);
   EXPECT_EQ(run("board-sim --board icestick --accel 100 --pty " + path("tty2")), 1);
   EXPECT_NE(stderr_.find("the icestick's core is built without the feed ramp"), std::string::npos) << stderr_;
+  EXPECT_FALSE(fs::exists(path("tty2")));
+}
+
+// The iCEBreaker's operator pins, pressed by board-sim --events: a feed hold and a
+// resume (buttons, debounced) keep the pulses and make the run that much longer; an
+// E-stop (a switch) stops the line with status "stopped" and exit 5, its position its
+// pulses. The iCEstick's core has no such pins and says so.
+TEST_F(BoardCli, TheIcebreakersPinsHoldResumeAndStop) {
+  write_line_tape();
+  const nlohmann::json p = play(path("line.nc"));
+  ASSERT_EQ(send_to_board(path("line.nc"), "--board icebreaker", ""), 0) << send_err_ << board_err_;
+  const nlohmann::json unheld = board_;
+  ASSERT_EQ(send_to_board(path("line.nc"), "--board icebreaker --events hold@0.3s,resume@0.7s", ""), 0)
+      << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  // The run is as much longer as the machine was held from press to resume: the brake
+  // and the climb again each take S / du and cover half that time's cruise. That is 0.4 s
+  // give or take a debounce sample period (each press is seen 1 to 2 periods of 65.5 ms
+  // late at 1 MHz).
+  const double longer_s = (board_["cycles"].get<double>() - unheld["cycles"].get<double>()) / 1e6;
+  EXPECT_GT(longer_s, 0.4 - 0.066);
+  EXPECT_LT(longer_s, 0.4 + 0.066);
+
+  EXPECT_NE(send_to_board(path("line.nc"), "--board icebreaker --events estop@0.5s", ""), 0);
+  EXPECT_EQ(board_code_, 5) << board_err_;
+  EXPECT_EQ(board_["status"], "stopped");
+  EXPECT_EQ(board_["error"]["code"], 14);
+  const int64_t x = board_["final_position_blu"]["x"];
+  EXPECT_GT(x, 5000);
+  EXPECT_LT(x, 15000);
+  EXPECT_EQ(x, board_["pulses"]["x"]["plus"].get<int64_t>());
+
+  EXPECT_EQ(run("board-sim --board icestick --events hold@1s --pty " + path("tty2")), 1);
+  EXPECT_NE(stderr_.find("the icestick's core is built without the operator's pins"), std::string::npos)
+      << stderr_;
+  EXPECT_EQ(run("board-sim --board icebreaker --events override=50@1s --pty " + path("tty2")), 1);
+  EXPECT_NE(stderr_.find("the boards take no override yet"), std::string::npos) << stderr_;
   EXPECT_FALSE(fs::exists(path("tty2")));
 }
 

@@ -28,7 +28,8 @@ std::string yosys_script(const BoardTarget& b, const std::string& json) {
   s += "; chparam -set LedActiveLow " + std::string(b.board.led_active_low ? "1" : "0") +
        " -set BitSerial " + (b.board.arch == Arch::kSerial ? "1" : "0") + " -set CircleMode " +
        (b.board.circle_mode ? "1" : "0") + " -set MiscFunctions " + (b.board.misc_functions ? "1" : "0") +
-       " -set AccelMmS2 " + std::to_string(static_cast<long>(b.board.accel_mm_s2)) + " board_top";
+       " -set AccelMmS2 " + std::to_string(static_cast<long>(b.board.accel_mm_s2)) +
+       " -set OperatorPins " + (b.board.operator_pins ? "1" : "0") + " board_top";
   // The project's synth_ice40 options (-abc9, timing-driven LUT mapping, is what makes 12 MHz
   // on the UP5K, docs/board.md); -dsp where the part has multipliers.
   s += "; synth_ice40 " + std::string(build::kSynthIce40Options) + (b.board.dsp ? " -dsp" : "") +

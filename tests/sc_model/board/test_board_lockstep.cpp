@@ -1,17 +1,22 @@
 // Lock step of the board RTL's modules against their golden twins, every clock:
 // uart_rx (rtl/board/uart_rx.sv) vs UartRxModel, uart_tx (rtl/board/uart_tx.sv) vs
-// UartTxModel, step_stretcher (rtl/board/step_stretcher.sv) vs StepStretcherModel, under
-// random stimulus (bytes, gaps, bit times, framing errors, glitches; step trains with
-// direction changes faster and slower than the driver timing). Besides agreeing, the
-// twins must do their job: bytes arrive as sent, pulses keep their width and set-up time.
+// UartTxModel, step_stretcher (rtl/board/step_stretcher.sv) vs StepStretcherModel,
+// operator_pins (rtl/board/operator_pins.sv) vs OperatorPinsModel, under random stimulus
+// (bytes, gaps, bit times, framing errors, glitches; step trains with direction changes
+// faster and slower than the driver timing; buttons pressed with bouncing contacts).
+// Besides agreeing, the twins must do their job: bytes arrive as sent, pulses keep their
+// width and set-up time, a bouncing press is one press.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <deque>
 #include <random>
 
+#include "Voperator_pins.h"
 #include "Vstep_stretcher.h"
 #include "Vuart_rx.h"
 #include "Vuart_tx.h"
+#include "operator_pins_model.h"
 #include "step_stretcher_model.h"
 #include "uart_rx_model.h"
 #include "uart_tx_model.h"
@@ -167,6 +172,60 @@ TEST(BoardLockstep, StepStretcherMatchesItsTwin) {
     // Every pulse comes out unless it was reported lost (two may still be on their way).
     EXPECT_LE(out + overruns, in);
     EXPECT_GE(out + overruns + 2, in) << "round " << round;
+  }
+}
+
+// The pins at a 16-clock sample period (DebounceWidth 4): each round presses the buttons
+// and trips the switches at random, each change with a burst of bounces shorter than a
+// sample period. Every press of a button (down for two sample periods and more) is exactly
+// one clock of its output, whatever its bounces; the switches follow their pins through
+// two flip-flops.
+TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
+  constexpr unsigned kWidth = 4, kPeriod = 1u << kWidth;
+  std::mt19937_64 rng(17);
+  Voperator_pins rtl;
+  reset(rtl);
+  OperatorPinsModel twin(kWidth);
+  std::array<bool, kOperatorPins> pins{}, settled{}, before{};
+  std::array<uint64_t, 2> pressed{}, presses{};
+  std::array<uint64_t, kOperatorPins> settle_at{};
+  for (uint64_t c = 1; c < 200000; ++c) {
+    for (int p = 0; p < kOperatorPins; ++p) {
+      // A change of a pin's settled level every ~50 sample periods, each level held three
+      // periods at least; the contact bounces for up to half a period after it.
+      if (c >= settle_at[p] + 3 * kPeriod && rng() % (50 * kPeriod) == 0) {
+        settled[p] = !settled[p];
+        settle_at[p] = c + rng() % (kPeriod / 2);
+        if (p < 2 && settled[p]) ++pressed[p];
+      }
+      pins[p] = c < settle_at[p] ? rng() % 2 == 0 : settled[p];
+    }
+    rtl.hold_i = pins[kPinHold];
+    rtl.start_i = pins[kPinStart];
+    rtl.estop_i = pins[kPinEStop];
+    rtl.limit_x_i = pins[kPinLimitX];
+    rtl.limit_y_i = pins[kPinLimitY];
+    rtl.optional_stop_i = pins[kPinOptionalStop];
+    clock_edge(rtl);
+    twin.tick(pins);
+    ASSERT_EQ(rtl.hold_o, twin.hold()) << "clock " << c;
+    ASSERT_EQ(rtl.start_o, twin.start()) << "clock " << c;
+    ASSERT_EQ(rtl.estop_o, twin.estop()) << "clock " << c;
+    ASSERT_EQ(rtl.limit_x_o, twin.limit_x()) << "clock " << c;
+    ASSERT_EQ(rtl.limit_y_o, twin.limit_y()) << "clock " << c;
+    ASSERT_EQ(rtl.optional_stop_o, twin.optional_stop()) << "clock " << c;
+    presses[0] += twin.hold();
+    presses[1] += twin.start();
+    // The switches: the pin as the edge before took it (two flip-flops).
+    ASSERT_EQ(twin.estop(), before[kPinEStop]) << "clock " << c;
+    ASSERT_EQ(twin.limit_y(), before[kPinLimitY]) << "clock " << c;
+    before = pins;
+  }
+  // Every settled press is one press; the last one may still be in the debouncer.
+  for (int b = 0; b < 2; ++b) {
+    EXPECT_GT(pressed[b], 50u);
+    EXPECT_LE(presses[b], pressed[b]) << "button " << b;
+    EXPECT_GE(presses[b] + 1, pressed[b]) << "button " << b;
   }
 }
 
