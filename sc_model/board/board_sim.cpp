@@ -194,6 +194,9 @@ class Runner {
           if (!sender_seen) pty_.release_slave();
           sender_seen = true;
           idle_since = std::chrono::steady_clock::now();
+        } else if (sender_seen && next_event < o_.events.size()) {
+          // An operator's event is still to come: the board waits for it, not for the
+          // sender; simulate on at full speed.
         } else if (board_idle || !sender_seen) {
           const double idle = std::chrono::duration<double>(std::chrono::steady_clock::now() - idle_since).count();
           if (idle > o_.idle_timeout_s) {
@@ -247,9 +250,10 @@ class Runner {
       if (final_deadline && cycle_ > final_deadline) break;  // no final line: reported below
       if (o_.max_cycles && cycle_ >= o_.max_cycles) break;
     }
-    // The last status bytes, then wait (bounded) for the sender to read them and close.
+    // The last status bytes, then wait (bounded) for the sender to read them and close;
+    // not after a pause, which no final line follows.
     const auto t0 = std::chrono::steady_clock::now();
-    while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5)) {
+    while (!r.paused && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5)) {
       flush(out);
       if (!out.empty()) {
         usleep(1000);

@@ -207,6 +207,22 @@ TEST_F(BoardCli, TheIcebreakersPinsHoldResumeAndStop) {
   EXPECT_FALSE(fs::exists(path("tty2")));
 }
 
+// On the iCEBreaker an M00 waits for the cycle start button: with no press to come the
+// run ends there (exit 6, status "paused"), with one it plays to its end.
+TEST_F(BoardCli, TheIcebreakersPauseWaitsForItsCycleStartButton) {
+  std::ofstream(path("m.nc")) << "%\nG17 G21 G91 G93\nN1 G01 X2.000 Y1.000 F600.000 M03\nN2 M00\n"
+                                 "N3 G01 X-1.000 Y2.000 F600.000 M05\nM02\n%\n";
+  EXPECT_NE(send_to_board(path("m.nc"), "--board icebreaker", ""), 0);
+  EXPECT_EQ(board_code_, 6) << board_err_;
+  EXPECT_EQ(board_["status"], "paused");
+  EXPECT_EQ(board_["final_position_blu"]["x"], 2000);
+  ASSERT_EQ(send_to_board(path("m.nc"), "--board icebreaker --events start@0.5s", ""), 0) << send_err_ << board_err_;
+  EXPECT_EQ(board_code_, 0) << board_err_;
+  EXPECT_EQ(board_["final_position_blu"]["x"], 1000);
+  EXPECT_EQ(board_["final_position_blu"]["y"], 3000);
+  EXPECT_GT(board_["paused_cycles"].get<uint64_t>(), 300000u);
+}
+
 TEST_F(BoardCli, ShortBlocksTheLineCannotKeepAheadOfLoseNoFrame) {
   // 300 one-step blocks at a high feed: each plays in far less time than its ~30 frames
   // take on the line, so the interpolator waits for the reader (gaps), never the reverse.
