@@ -6,6 +6,8 @@
 // Idea: everything is built and checked in memory first (the tape text is read back with
 // the project's own tape reader, the deviation of the chord path from the contour is
 // measured), then each output is written atomically; a failure leaves no file behind.
+// With --accel it also plans the feed (sc_model/checker/feed_plan.h): the tape's cycle time
+// at exact stop on the 12 MHz board machine, and what continuous mode would take.
 // Exit 0 on success; 1 on bad input (one line "FILE:LINE: what is wrong") or options.
 #include <chrono>
 #include <cmath>
@@ -13,12 +15,14 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "output_set.h"
 #include "command_registry.h"
 #include "boards.h"
+#include "feed_plan.h"
 #include "firststage.h"
 #include "inputs/contour_inputs.h"
 #include "measure/deviation_meter.h"
@@ -36,7 +40,23 @@ struct TapeArgs {
   FirstStageOptions options;
   double airfoil_chord_mm = 100.0;
   double cut_z_mm = std::numeric_limits<double>::quiet_NaN();
+  double accel_mm_s2 = 0;  // > 0: plan the feed at this limit
+  checker::FeedPlanOptions plan;
 };
+
+// The feed plan's figures for the report.
+nlohmann::json plan_json(const checker::FeedPlan& p, const checker::FeedPlanOptions& o) {
+  nlohmann::json continuous = nlohmann::json::array();
+  for (const checker::ContinuousPlan& c : p.continuous)
+    continuous.push_back({{"lookahead_blocks", c.lookahead == 0 ? nlohmann::json("all") : nlohmann::json(c.lookahead)},
+                          {"seconds", c.seconds}});
+  return {{"accel_mm_s2", o.accel_mm_s2},
+          {"junction_deviation_mm", o.junction_deviation_mm},
+          {"clock_hz", 12e6},
+          {"programmed_seconds", p.programmed_s},
+          {"exact_stop_seconds", p.exact_stop_s},
+          {"continuous_planned_only", continuous}};
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -149,6 +169,15 @@ int run(TapeArgs a) {
     throw std::logic_error("the tape reader read " + std::to_string(back.blocks.size()) +
                            " blocks back, " + std::to_string(program.blocks.size()) + " written");
 
+  // The feed plan on the board's machine (its 12 MHz clock, the default rapid rate).
+  std::optional<checker::FeedPlan> plan;
+  if (a.accel_mm_s2 > 0) {
+    a.plan.accel_mm_s2 = a.accel_mm_s2;
+    const InterpConfig machine = a.board.empty() ? interp_config(12e6, format)
+                                                 : board::board_interp_config(board::board_named(a.board), 12e6, 0);
+    plan = checker::plan_feed(back, machine, 12e6, a.plan);
+  }
+
   // Independent measure of the contour path (before the cutter offset) against the contour.
   const auto t_measure = std::chrono::steady_clock::now();
   const DeviationReport dev =
@@ -232,6 +261,8 @@ int run(TapeArgs a) {
         {"measure", measure_s}}},
   };
 
+  if (plan) report["feed_plan"] = plan_json(*plan, a.plan);
+
   // What was read back is what is written (write_tape_file would format it again).
   OutputSet::write(tape_out, is_frames ? std::string_view(reinterpret_cast<const char*>(frames.data()),
                                                          frames.size())
@@ -251,6 +282,18 @@ int run(TapeArgs a) {
       std::fprintf(summary, "  pass %zu at %s: %ld blocks from N%ld (%ld traverses), %.3f mm cut, %.3f mm traversed\n",
                    p + 1, depth_text(passes[p].depth_mm).c_str(), passes[p].blocks, passes[p].first_block,
                    passes[p].traverse_blocks, passes[p].cut_mm, passes[p].traverse_mm);
+  if (plan) {
+    std::fprintf(summary, "  cycle time at %g mm/s^2 (12 MHz board): %.2f s at exact stop (as played), %.2f s "
+                 "without a ramp; continuous mode (G64, junction deviation %g mm, planned only, not built): ",
+                 a.accel_mm_s2, plan->exact_stop_s, plan->programmed_s, a.plan.junction_deviation_mm);
+    for (size_t i = 0; i < plan->continuous.size(); ++i) {
+      const checker::ContinuousPlan& c = plan->continuous[i];
+      std::fprintf(summary, "%s%.2f s reading %s", i ? ", " : "", c.seconds,
+                   c.lookahead == 0 ? "the whole tape ahead"
+                                    : (std::to_string(c.lookahead) + " block" + (c.lookahead > 1 ? "s" : "") + " ahead").c_str());
+    }
+    std::fprintf(summary, "\n");
+  }
   if (!a.report.empty()) std::fprintf(summary, "report: %s\n", a.report.c_str());
   return 0;
 }
@@ -287,6 +330,15 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
   cmd->add_flag("--tool", o.tool,
                 "the tool output on for the cuts only (laser, torch, pen): M03 with the first cut "
                 "after each traverse, M05 with the last before the next");
+  cmd->add_option("--accel", args->accel_mm_s2,
+                  "plan the feed at this acceleration limit, mm/s^2: print and report the cycle time at "
+                  "exact stop (what the machine plays with play/check --accel) and what continuous mode "
+                  "(G64, planned only) would take (docs/motion-control.md 7)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--junction-deviation", args->plan.junction_deviation_mm,
+                  "continuous mode's corner rule (grbl's, Klipper's), mm: only in --accel's plan")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->add_option("--budget-blu", o.budget_blu, "interpolator's own error reserved from --tol, BLU")
       ->capture_default_str();
   cmd->add_option("--airfoil-chord", args->airfoil_chord_mm, "chord of a .dat airfoil, mm")

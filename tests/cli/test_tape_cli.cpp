@@ -215,6 +215,31 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"missing.json", nullptr, "0: cannot open the file"}),
     [](const auto& info) { return test_name_of(info.param.name); });
 
+// --accel plans the feed: the report gives the cycle time without a ramp, at exact stop
+// and in continuous mode for each look-ahead, each no faster than the next; `check` plays
+// the tape at exact stop in the planned time (from its first block's load on).
+TEST_F(TapeCli, TheFeedPlanForetellsWhatCheckPlays) {
+  const std::string input = kExamples + "/naca2412_selig.dat";
+  ASSERT_EQ(run("tape " + input + " -o " + path("a.tape") + " --accel 500 --report " + path("r.json")), 0)
+      << stderr_;
+  EXPECT_NE(stdout_.find("cycle time at 500 mm/s^2 (12 MHz board)"), std::string::npos) << stdout_;
+  const nlohmann::json plan = json_of(path("r.json"))["feed_plan"];
+  const double exact = plan["exact_stop_seconds"];
+  double previous = exact;
+  ASSERT_EQ(plan["continuous_planned_only"].size(), 4u);
+  for (const nlohmann::json& c : plan["continuous_planned_only"]) {
+    EXPECT_LE(c["seconds"].get<double>(), previous) << c;
+    previous = c["seconds"];
+  }
+  EXPECT_EQ(plan["continuous_planned_only"][3]["lookahead_blocks"], "all");
+  EXPECT_GT(previous, plan["programmed_seconds"].get<double>());
+  ASSERT_EQ(run("check " + path("a.tape") + " --accel 500 --clock-hz 12e6 --report " + path("c.json")), 0)
+      << stderr_;
+  const nlohmann::json played = json_of(path("c.json"))["feed_plan"];
+  EXPECT_NEAR(played["planned_seconds"].get<double>(), exact, 1e-9);
+  EXPECT_NEAR(played["played_seconds"].get<double>(), exact, 1e-3 * exact);
+}
+
 TEST_F(TapeCli, BadOptionsOneLineNoOutput) {
   const std::string input = kExamples + "/circle_r50.json";
   const std::string out = " -o " + path("out.tape") + " --report " + path("r.json");

@@ -14,6 +14,7 @@
 #include "random_contour.h"
 #include "regression_support.h"
 #ifdef NCINTERP_TEST_HAS_COSIM
+#include "check_report.h"
 #include "lockstep.h"
 #endif
 
@@ -47,7 +48,8 @@ Case case_of(const Example& e) {
   return c;
 }
 
-void expect_clean_check(const Case& c, EngineKind engine) {
+// Checks the case on `engine` and expects a clean pass; returns the check's report.
+nlohmann::json expect_clean_check(const Case& c, EngineKind engine) {
   Case run = c;
   run.check.engine = engine;
   const checker::CheckOutcome out = run_case(run);
@@ -66,6 +68,7 @@ void expect_clean_check(const Case& c, EngineKind engine) {
   }
   EXPECT_LE(k.total_error().max, out.tol_blu);
   for (const checker::BlockResult& r : k.results()) EXPECT_LE(r.path.max, r.bound + 1e-9);
+  return checker::check_report_json(out, {"", "", run.check});
 }
 
 class ExampleRegression : public ::testing::TestWithParam<Example> {};
@@ -131,7 +134,13 @@ TEST_P(RampedRegression, KeepsThePulsesOnBothArchs) {
     EXPECT_GT(ramped.cycles, plain.cycles);
   }
   c.check.accel_mm_s2 = kAccel;
-  expect_clean_check(c, EngineKind::kGolden);
+  // The feed plan (ncinterp tape --accel) foretells the played time from the first load on,
+  // less the clocks the reader kept the interpolator waiting: its trapezoids are the
+  // ramp's, within GoldenRamp.EachBlockLastsItsIdealTrapezoidWithinAFewClocks's bound.
+  const nlohmann::json report = expect_clean_check(c, EngineKind::kGolden);
+  const double clock_hz = report["clock_hz"], blocks = report["blocks"], gaps = report["gap_clocks"];
+  const double played = report["feed_plan"]["played_seconds"].get<double>() - gaps / clock_hz;
+  EXPECT_NEAR(played, report["feed_plan"]["planned_seconds"].get<double>(), 1e-3 * played + 20 * blocks / clock_hz);
 #endif
 }
 
