@@ -84,6 +84,10 @@ check_engines="golden:serial rtl:serial golden:parallel rtl:parallel"
 # with every block ramped from rest to rest at each acceleration limit (mm/s^2).
 motion_accels="500 2000"
 motion_machine="--clock-hz 12e6 --reader-cps 11520 --arch serial"
+# The feed plan of the same tapes (ncinterp tape --accel): a realistic machine's limit and
+# corner rule (the rapid rate is the default 5 m/min), exact stop as planned and as played
+# (check, from the first block's load), continuous mode planned per look-ahead.
+plan_machine="--accel 500 --junction-deviation 0.01"
 
 # Gap clocks (the player idle between blocks) against the reader and the feed, one table
 # per line: "name | script and its options | reader speeds or feeds | tapes or contour and
@@ -363,8 +367,16 @@ section_check() {
 }
 
 section_motion() {
-  local out=$work/motion.md row input args accel
+  local out=$work/motion.md plan=$work/plan.md row input args accel
   build_targets ncinterp
+  {
+    stamp motion
+    echo
+    echo "\`ncinterp tape INPUT ARGS $plan_machine\` (continuous mode is planned only: G64 is not built)."
+    echo
+    echo '| input | blocks | no ramp: s | exact stop: s | played: s | continuous, 1 block read ahead: s | 2 blocks: s | 4 blocks: s | the whole tape: s |'
+    echo '|---|---:|---:|---:|---:|---:|---:|---:|---:|'
+  } >"$plan"
   {
     stamp motion
     echo
@@ -378,7 +390,7 @@ section_motion() {
     input=$(field "$row" 1) args=$(field "$row" 2)
     echo "figures.sh: motion: $input $args" >&2
     # shellcheck disable=SC2086
-    "$build/ncinterp" tape "$input" -o "$work/m.tape" $args >/dev/null 2>&1
+    "$build/ncinterp" tape "$input" -o "$work/m.tape" $args $plan_machine --report "$work/p.json" >/dev/null 2>&1
     local line blocks
     # shellcheck disable=SC2086
     "$build/ncinterp" check "$work/m.tape" --contour "$input" $motion_machine --report "$work/m.json" >/dev/null
@@ -389,10 +401,17 @@ section_motion() {
       "$build/ncinterp" check "$work/m.tape" --contour "$input" $motion_machine --accel "$accel" \
         --report "$work/m.json" >/dev/null
       line+=" $(json_get "$work/m.json" cycle_seconds '%.2f') | $(json_get "$work/m.json" acceleration.max_mm_s2.x '%.0f'), $(json_get "$work/m.json" acceleration.max_mm_s2.y '%.0f') |"
+      [[ $accel == 500 ]] && cp "$work/m.json" "$work/m500.json"
     done
     echo "$line" >>"$out"
+    line="| $(basename "$input") \`$args\` | $blocks | $(json_get "$work/p.json" feed_plan.programmed_seconds '%.2f') |"
+    line+=" $(json_get "$work/p.json" feed_plan.exact_stop_seconds '%.2f') | $(json_get "$work/m500.json" feed_plan.played_seconds '%.2f') |"
+    local k
+    for k in 0 1 2 3; do line+=" $(json_get "$work/p.json" "feed_plan.continuous_planned_only[$k].seconds" '%.2f') |"; done
+    echo "$line" >>"$plan"
   done
   put docs/motion-control.md motion "$out"
+  put docs/motion-control.md feed-plan "$plan"
 }
 
 section_firststage() {
