@@ -384,7 +384,7 @@ BoardSimResult run_board_sim(const BoardSimOptions& o,
   // The board core of the board's configuration (sc_model/board/CMakeLists.txt).
   const bool circle_mode = board_named(o.board).circle_mode;
   const CoreConfig c = core_config(o);
-  const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz, o.accel_mm_s2);
+  const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz, o.accel_mm_s2, o.rapid_mm_min);
   if (!o.events.empty() && !board_named(o.board).operator_pins)
     throw std::invalid_argument("--events: the " + o.board + "'s core is built without the operator's pins (docs/board.md)");
   for (const OperatorEvent& e : o.events) operator_pin(e.kind);

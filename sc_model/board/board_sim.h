@@ -37,6 +37,7 @@ enum class Flow { kRtsCts, kXonXoff };
 struct BoardSimOptions {
   std::string board = "icestick";
   double accel_mm_s2 = -1;    // the feed ramp's limit; < 0: the board's own, 0: none
+  double rapid_mm_min = kDefaultRapidMmMin;  // the rapid rate (board_top's RapidMmMin)
   std::vector<OperatorEvent> events;  // on the board's pins (no overrides: no pins for them)
   double clock_hz = 12e6;
   unsigned baud = 115200;

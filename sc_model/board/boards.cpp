@@ -29,11 +29,11 @@ const Board& board_named(const std::string& name) {
   throw std::invalid_argument("unknown board '" + name + "' (" + board_names() + ")");
 }
 
-InterpConfig board_interp_config(const Board& b, double clock_hz, double accel_mm_s2) {
+InterpConfig board_interp_config(const Board& b, double clock_hz, double accel_mm_s2, double rapid_mm_min) {
   if (accel_mm_s2 < 0) accel_mm_s2 = b.accel_mm_s2;
   if (accel_mm_s2 > 0 && b.accel_mm_s2 == 0)
     throw std::invalid_argument("--accel: the " + b.name + "'s core is built without the feed ramp (docs/board.md)");
-  InterpConfig cfg = interp_config(clock_hz, {}, kDefaultRapidMmMin, accel_mm_s2);
+  InterpConfig cfg = interp_config(clock_hz, {}, rapid_mm_min, accel_mm_s2);
   cfg.arch = b.arch;
   cfg.circle_mode = b.circle_mode;
   cfg.misc_functions = b.misc_functions;

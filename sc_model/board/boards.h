@@ -38,8 +38,10 @@ std::string board_names();
 
 // The interpolator as board_core builds it for the board at clock_hz: its arch, circle
 // mode, miscellaneous functions and feed ramp (accel_mm_s2 < 0: the board's own limit;
-// 0: no ramp; refused where the board has none), and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
+// 0: no ramp; refused where the board has none), the rapid rate (mm/min; board_top's
+// RapidMmMin is the default), and board_core's widths (PosWidth, SeqWidth, OffsetWidth: 20 bits; the status line
 // sends their low bits, sc_model/board/status_text.h).
-InterpConfig board_interp_config(const Board& b, double clock_hz, double accel_mm_s2 = -1);
+InterpConfig board_interp_config(const Board& b, double clock_hz, double accel_mm_s2 = -1,
+                                 double rapid_mm_min = kDefaultRapidMmMin);
 
 }  // namespace ncinterp::board

@@ -80,6 +80,7 @@ void setup(CLI::App& app) {
                   "The feed ramp's acceleration limit, mm/s^2 (default: the board's, 500 on the "
                   "iCEBreaker; 0: no ramp; the iCEstick's core has none)")
       ->check(CLI::NonNegativeNumber);
+  add_rapid_option(cmd, o.rapid_mm_min);
   add_events_option(cmd, args->events);
   cmd->add_option("--flow", args->flow, "Flow control the USB-serial chip honours: rtscts or xonxoff "
                                         "(default: rtscts on the iCEstick, xonxoff on the iCEBreaker)")
