@@ -69,6 +69,20 @@ module operator_pins #(
     end
   end
 
+`ifndef SYNTHESIS
+  // Checked at every edge of every verilated run: a press comes only with its button down
+  // and lasts one clock (the next tick is 2^DebounceWidth clocks away), the one clock of
+  // hold_i or start_i that interp_top takes for a press.
+  logic [1:0] press_prev_q;
+  always_ff @(posedge clk_i) begin
+    press_prev_q <= press_q;
+    if (rst_ni) begin
+      a_press_when_down: assert ((press_q & ~down_q) == '0);
+      a_press_one_clock: assert ((press_q & press_prev_q) == '0);
+    end
+  end
+`endif
+
   assign hold_o          = press_q[0];
   assign start_o         = press_q[1];
   assign estop_o         = sync_q[2];
