@@ -169,8 +169,10 @@ int run(TapeArgs a) {
     throw std::logic_error("the tape reader read " + std::to_string(back.blocks.size()) +
                            " blocks back, " + std::to_string(program.blocks.size()) + " written");
 
-  // The feed plan on the board's machine (its 12 MHz clock, the default rapid rate).
+  // The feed plan on the board's machine (its 12 MHz clock, the default rapid rate); a
+  // board that ramps plans at its own limit unless --accel says otherwise.
   std::optional<checker::FeedPlan> plan;
+  if (a.accel_mm_s2 == 0 && !a.board.empty()) a.accel_mm_s2 = board::board_named(a.board).accel_mm_s2;
   if (a.accel_mm_s2 > 0) {
     a.plan.accel_mm_s2 = a.accel_mm_s2;
     const InterpConfig machine = a.board.empty() ? interp_config(12e6, format)
@@ -333,7 +335,8 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
   cmd->add_option("--accel", args->accel_mm_s2,
                   "plan the feed at this acceleration limit, mm/s^2: print and report the cycle time at "
                   "exact stop (what the machine plays with play/check --accel) and what continuous mode "
-                  "(G64, planned only) would take (docs/motion-control.md 7)")
+                  "(G64, planned only) would take (docs/motion-control.md 7); default with --board: "
+                  "the board's own limit (500 on the iCEBreaker)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--junction-deviation", args->plan.junction_deviation_mm,
                   "continuous mode's corner rule (grbl's, Klipper's), mm: only in --accel's plan")
