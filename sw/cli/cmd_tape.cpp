@@ -44,6 +44,9 @@ struct TapeArgs {
   checker::FeedPlanOptions plan;
 };
 
+// The machine the feed plan is made for: the boards' 12 MHz oscillator (boards.cpp).
+constexpr double kPlanClockHz = 12e6;
+
 // The feed plan's figures for the report.
 nlohmann::json plan_json(const checker::FeedPlan& p, const checker::FeedPlanOptions& o) {
   nlohmann::json continuous = nlohmann::json::array();
@@ -52,7 +55,7 @@ nlohmann::json plan_json(const checker::FeedPlan& p, const checker::FeedPlanOpti
                           {"seconds", c.seconds}});
   return {{"accel_mm_s2", o.accel_mm_s2},
           {"junction_deviation_mm", o.junction_deviation_mm},
-          {"clock_hz", 12e6},
+          {"clock_hz", kPlanClockHz},
           {"programmed_seconds", p.programmed_s},
           {"exact_stop_seconds", p.exact_stop_s},
           {"continuous_planned_only", continuous}};
@@ -175,9 +178,10 @@ int run(TapeArgs a) {
   if (a.accel_mm_s2 == 0 && !a.board.empty()) a.accel_mm_s2 = board::board_named(a.board).accel_mm_s2;
   if (a.accel_mm_s2 > 0) {
     a.plan.accel_mm_s2 = a.accel_mm_s2;
-    const InterpConfig machine = a.board.empty() ? interp_config(12e6, format)
-                                                 : board::board_interp_config(board::board_named(a.board), 12e6, 0);
-    plan = checker::plan_feed(back, machine, 12e6, a.plan);
+    const InterpConfig machine = a.board.empty()
+                                     ? interp_config(kPlanClockHz, format)
+                                     : board::board_interp_config(board::board_named(a.board), kPlanClockHz, 0);
+    plan = checker::plan_feed(back, machine, kPlanClockHz, a.plan);
   }
 
   // Independent measure of the contour path (before the cutter offset) against the contour.
@@ -285,9 +289,9 @@ int run(TapeArgs a) {
                    p + 1, depth_text(passes[p].depth_mm).c_str(), passes[p].blocks, passes[p].first_block,
                    passes[p].traverse_blocks, passes[p].cut_mm, passes[p].traverse_mm);
   if (plan) {
-    std::fprintf(summary, "  cycle time at %g mm/s^2 (12 MHz board): %.2f s at exact stop (as played), %.2f s "
+    std::fprintf(summary, "  cycle time at %g mm/s^2 (%g MHz board): %.2f s at exact stop (as played), %.2f s "
                  "without a ramp; continuous mode (G64, junction deviation %g mm, planned only, not built): ",
-                 a.accel_mm_s2, plan->exact_stop_s, plan->programmed_s, a.plan.junction_deviation_mm);
+                 a.accel_mm_s2, kPlanClockHz / 1e6, plan->exact_stop_s, plan->programmed_s, a.plan.junction_deviation_mm);
     for (size_t i = 0; i < plan->continuous.size(); ++i) {
       const checker::ContinuousPlan& c = plan->continuous[i];
       std::fprintf(summary, "%s%.2f s reading %s", i ? ", " : "", c.seconds,
