@@ -277,12 +277,16 @@ int run(TapeArgs a) {
   outputs.commit();
   // The summary goes to stderr when the tape itself goes to standard output.
   FILE* summary = a.output == "-" ? stderr : stdout;
+  // --tool's blocks without motion: pierce dwells (M03) and still M05 blocks.
+  const size_t tool_blocks = program.blocks.size() - res.moves.size();
   std::fprintf(summary,
-               "%s: %zu blocks (%ld chords, %ld straight, %ld arc blocks, %ld traverses G00), %zu "
+               "%s: %zu blocks (%ld chords, %ld straight, %ld arc blocks, %ld traverses G00%s), %zu "
                "frames, max deviation %.4f mm sampled every %g mm (tol %g mm; `check` measures "
                "exactly)\n",
                a.output.c_str(), program.blocks.size(), chord_blocks, lines - chord_blocks - traverses,
-               arcs, traverses, frames.size(), dev.max_mm, o.tol_mm / 4, o.tol_mm);
+               arcs, traverses,
+               tool_blocks ? (", " + std::to_string(tool_blocks) + " tool blocks without motion").c_str() : "",
+               frames.size(), dev.max_mm, o.tol_mm / 4, o.tol_mm);
   if (passes.size() > 1 || !std::isnan(passes.front().depth_mm))
     for (size_t p = 0; p < passes.size(); ++p)
       std::fprintf(summary, "  pass %zu at %s: %ld blocks from N%ld (%ld traverses), %.3f mm cut, %.3f mm traversed\n",
@@ -336,6 +340,11 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
   cmd->add_flag("--tool", o.tool,
                 "the tool output on for the cuts only (laser, torch, pen): M03 with the first cut "
                 "after each traverse, M05 with the last before the next");
+  cmd->add_option("--pierce-delay", o.pierce_delay_s,
+                  "with --tool: seconds the tool is on at rest before each run of cuts (a torch's or "
+                  "laser's pierce): an M03 block that dwells, then the cuts")
+      ->check(CLI::Range(0.001, 3600.0))
+      ->needs("--tool");
   cmd->add_option("--accel", args->accel_mm_s2,
                   "plan the feed at this acceleration limit, mm/s^2: print and report the cycle time at "
                   "exact stop (what the machine plays with play/check --accel) and what continuous mode "

@@ -240,6 +240,33 @@ TEST_F(TapeCli, TheFeedPlanForetellsWhatCheckPlays) {
   EXPECT_NEAR(played["played_seconds"].get<double>(), exact, 1e-3 * exact);
 }
 
+// --tool switches the tool around every run of cuts; --pierce-delay S puts the M03 on a
+// block that dwells S seconds at rest before the run (a G01 without motion, F = 60 / S per
+// minute). The check passes (the tool rule included) and the run is S longer per pierce.
+TEST_F(TapeCli, APierceDelayDwellsWithTheToolOnBeforeEachRunOfCuts) {
+  const std::string input = kExamples + "/cam/laser_lightburn.gcode";
+  ASSERT_EQ(run("tape " + input + " -o " + path("t.nc") + " --tool"), 0) << stderr_;
+  ASSERT_EQ(run("tape " + input + " -o " + path("p.nc") + " --tool --pierce-delay 0.25"), 0) << stderr_;
+  const std::string text = slurp(path("p.nc"));
+  size_t pierces = 0;
+  for (size_t at = text.find("M03"); at != std::string::npos; at = text.find("M03", at + 1)) {
+    const size_t start = text.rfind('\n', at) + 1;
+    EXPECT_NE(text.substr(start, at - start).find("G01 X0.000 Y0.000 F240.000"), std::string::npos)
+        << text.substr(start, at - start);
+    ++pierces;
+  }
+  EXPECT_EQ(pierces, 2u);
+  double seconds[2];
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_EQ(run("check " + path(k ? "p.nc" : "t.nc") + " --clock-hz 12e6 --report " + path("c.json")), 0)
+        << stdout_ << stderr_;
+    seconds[k] = json_of(path("c.json"))["cycle_seconds"];
+  }
+  EXPECT_NEAR(seconds[1] - seconds[0], 0.25 * pierces, 1e-6);
+  EXPECT_EQ(run("tape " + input + " -o " + path("q.nc") + " --pierce-delay 0.25"), 1);
+  EXPECT_NE(stderr_.find("--pierce-delay requires --tool"), std::string::npos) << stderr_;
+}
+
 TEST_F(TapeCli, BadOptionsOneLineNoOutput) {
   const std::string input = kExamples + "/circle_r50.json";
   const std::string out = " -o " + path("out.tape") + " --report " + path("r.json");

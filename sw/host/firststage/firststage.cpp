@@ -328,7 +328,7 @@ namespace {
 // one M word only, gets its M05 in a still block after it, with the same N (so the motion
 // blocks keep their numbers). Both act at rest (exact stop), and the traverses between
 // runs play with the tool off.
-void switch_tool_for_cuts(tape::Program& prog) {
+void switch_tool_for_cuts(tape::Program& prog, double pierce_delay_s, const tape::Format& format) {
   std::vector<tape::Block> out;
   const std::vector<tape::Block>& in = prog.blocks;
   for (size_t k = 0; k < in.size(); ++k) {
@@ -336,10 +336,18 @@ void switch_tool_for_cuts(tape::Program& prog) {
     const bool cut = !tape::is_rapid(b.motion);
     const bool first = cut && (k == 0 || tape::is_rapid(in[k - 1].motion));
     const bool last = cut && (k + 1 == in.size() || tape::is_rapid(in[k + 1].motion));
-    b.tool_on = first;
-    b.tool_off = last && !first;
+    if (first && pierce_delay_s > 0) {
+      // The pierce: the tool on at rest for the delay, a G01 of length 0 lasting 1/F (the
+      // feed rounded down: never shorter), with the cut's N.
+      tape::Block pierce{b.n, tape::Motion::kLine};
+      pierce.feed = inverse_time_feed(1.0, 60.0 / pierce_delay_s, format);
+      pierce.tool_on = true;
+      out.push_back(pierce);
+    }
+    b.tool_on = first && pierce_delay_s <= 0;
+    b.tool_off = last && !b.tool_on;
     out.push_back(b);
-    if (first && last) {
+    if (first && last && b.tool_on) {
       tape::Block off{b.n, tape::Motion::kRapid};
       off.still = off.tool_off = true;
       out.push_back(off);
@@ -373,7 +381,7 @@ tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o
     prog.blocks.push_back(b);
     cur = m.to;
   }
-  if (o.tool) switch_tool_for_cuts(prog);
+  if (o.tool) switch_tool_for_cuts(prog, o.pierce_delay_s, format);
   return prog;
 }
 

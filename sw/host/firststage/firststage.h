@@ -31,6 +31,10 @@ struct FirstStageOptions {
   // The tool output on for the cuts only (a laser, torch or pen): M03 with the first cut
   // of every run of cuts, M05 with its last (make_program()).
   bool tool = false;
+  // With `tool`: seconds the tool is on at rest before each run of cuts (a torch's or a
+  // laser's pierce delay): a block of M03 and a dwell, a G01 without X and Y that lasts
+  // 1/F (make_program()); 0: none.
+  double pierce_delay_s = 0.0;
 };
 
 enum class MoveKind { kLine, kArcCw, kArcCcw };
