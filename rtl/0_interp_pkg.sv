@@ -91,7 +91,36 @@ package interp_pkg;
   localparam int OverrideWidth = 9;
   localparam int OverrideFracBits = 7;
   localparam logic [OverrideWidth-1:0] OverrideOne = 9'd128;
+  localparam int OverrideTens = 20;
   /* verilator lint_on UNUSEDPARAM */
+  // The boards' feed override buttons: 10 % a step; tens (0 to OverrideTens) as the
+  // override, rounded as the command line rounds a percentage.
+  function automatic logic [OverrideWidth-1:0] override_of_tens(input logic [4:0] tens);
+    case (tens)
+      5'd0: override_of_tens = 9'd0;
+      5'd1: override_of_tens = 9'd13;
+      5'd2: override_of_tens = 9'd26;
+      5'd3: override_of_tens = 9'd38;
+      5'd4: override_of_tens = 9'd51;
+      5'd5: override_of_tens = 9'd64;
+      5'd6: override_of_tens = 9'd77;
+      5'd7: override_of_tens = 9'd90;
+      5'd8: override_of_tens = 9'd102;
+      5'd9: override_of_tens = 9'd115;
+      5'd10: override_of_tens = 9'd128;
+      5'd11: override_of_tens = 9'd141;
+      5'd12: override_of_tens = 9'd154;
+      5'd13: override_of_tens = 9'd166;
+      5'd14: override_of_tens = 9'd179;
+      5'd15: override_of_tens = 9'd192;
+      5'd16: override_of_tens = 9'd205;
+      5'd17: override_of_tens = 9'd218;
+      5'd18: override_of_tens = 9'd230;
+      5'd19: override_of_tens = 9'd243;
+      5'd20: override_of_tens = 9'd256;
+      default: override_of_tens = OverrideOne;
+    endcase
+  endfunction
 
   // Error codes: error_code_o (0 while error_o is low).
   localparam int ErrCodeWidth = 5;

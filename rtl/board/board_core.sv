@@ -48,9 +48,10 @@ module board_core #(
   parameter bit MiscFunctions = 1'b1,
   // The feed ramp (interp_top's Accel): the iCEstick's core has no room for it either.
   parameter bit Accel = 1'b1,
-  // The operator's pins (operator_pins.sv): feed hold and cycle start buttons, E-stop,
-  // limit and optional stop switches. Without them (the iCEstick) nothing stops the
-  // machine but reset, and cycle start is held pressed: a pause ends at once.
+  // The operator's pins (operator_pins.sv): feed hold, cycle start and override buttons,
+  // E-stop, limit and optional stop switches. Without them (the iCEstick) nothing stops
+  // the machine but reset, the overrides are 100 %, and cycle start is held pressed: a
+  // pause ends at once.
   parameter bit OperatorPins = 1'b1,
   // The buttons' debounce sample period, 2^DebounceWidth clocks (5.5 ms at 12 MHz).
   parameter int DebounceWidth = 16,
@@ -75,6 +76,10 @@ module board_core #(
   // The operator's pins, active high (pressed, tripped, on), asynchronous.
   input  logic        hold_i,
   input  logic        start_i,
+  input  logic        feed_up_i,
+  input  logic        feed_down_i,
+  input  logic        feed_reset_i,
+  input  logic        rapid_cycle_i,
   input  logic        estop_i,
   input  logic        limit_x_i,
   input  logic        limit_y_i,
@@ -169,17 +174,23 @@ module board_core #(
   assign fifo_ready  = eot || (frame_ready && !tape_end_q);
 
   logic op_hold, op_start, op_estop, op_limit_x, op_limit_y, op_optional_stop;
+  logic [interp_pkg::OverrideWidth-1:0] op_feed_override, op_rapid_override;
   if (OperatorPins) begin : g_pins
     operator_pins #(.DebounceWidth(DebounceWidth)) u_pins (
-      .clk_i, .rst_ni, .hold_i, .start_i, .estop_i, .limit_x_i, .limit_y_i, .optional_stop_i,
-      .hold_o(op_hold), .start_o(op_start), .estop_o(op_estop), .limit_x_o(op_limit_x),
+      .clk_i, .rst_ni, .hold_i, .start_i, .feed_up_i, .feed_down_i, .feed_reset_i, .rapid_cycle_i,
+      .estop_i, .limit_x_i, .limit_y_i, .optional_stop_i,
+      .hold_o(op_hold), .start_o(op_start), .feed_override_o(op_feed_override),
+      .rapid_override_o(op_rapid_override), .estop_o(op_estop), .limit_x_o(op_limit_x),
       .limit_y_o(op_limit_y), .optional_stop_o(op_optional_stop)
     );
   end else begin : g_no_pins
     assign {op_hold, op_estop, op_limit_x, op_limit_y, op_optional_stop} = '0;
     assign op_start = 1'b1;
+    assign op_feed_override = interp_pkg::OverrideOne;
+    assign op_rapid_override = interp_pkg::OverrideOne;
     logic unused_pins;
-    assign unused_pins = &{1'b0, hold_i, start_i, estop_i, limit_x_i, limit_y_i, optional_stop_i};
+    assign unused_pins = &{1'b0, hold_i, start_i, feed_up_i, feed_down_i, feed_reset_i, rapid_cycle_i,
+                           estop_i, limit_x_i, limit_y_i, optional_stop_i};
   end
 
   interp_top #(
@@ -189,7 +200,7 @@ module board_core #(
   ) u_interp (
     .clk_i, .rst_ni,
     .feed_modulus_i, .rapid_step_i, .accel_step_i, .hold_i(op_hold), .start_i(op_start),
-    .feed_override_i(interp_pkg::OverrideOne), .rapid_override_i(interp_pkg::OverrideOne),
+    .feed_override_i(op_feed_override), .rapid_override_i(op_rapid_override),
     .estop_i(op_estop), .limit_x_i(op_limit_x), .limit_y_i(op_limit_y),
     .optional_stop_i(op_optional_stop),
     .frame_i(fifo_data), .frame_valid_i(frame_valid), .tape_end_i(tape_end_q),

@@ -35,10 +35,11 @@ module board_top #(
   // The feed ramp's acceleration limit, mm/s^2 (docs/motion-control.md); 0 builds no ramp.
   parameter int     AccelMmS2  = 500,
   // The operator's pins (board_core's OperatorPins), and which of them are active high (a
-  // button with a pull-down), in the order {optional stop, limit y, limit x, E-stop, start,
-  // hold}; the others are active low (a contact to GND, the pin's pull-up in the .pcf).
+  // button with a pull-down), in the order {optional stop, limit y, limit x, E-stop, rapid
+  // override step, feed override 100 %, -10 %, +10 %, start, hold}; the others are active
+  // low (a contact to GND, the pin's pull-up in the .pcf).
   parameter bit     OperatorPins = 1'b1,
-  parameter logic [5:0] OperatorActiveHigh = 6'b000111
+  parameter logic [9:0] OperatorActiveHigh = 10'b0001000011
 ) (
   input  logic clk_i,
   input  logic uart_rx_i,
@@ -52,6 +53,10 @@ module board_top #(
   // The operator's buttons and switches (OperatorActiveHigh says each one's polarity).
   input  logic hold_pin_i,
   input  logic start_pin_i,
+  input  logic feed_up_pin_i,
+  input  logic feed_down_pin_i,
+  input  logic feed_reset_pin_i,
+  input  logic rapid_cycle_pin_i,
   input  logic estop_pin_i,
   input  logic limit_x_pin_i,
   input  logic limit_y_pin_i,
@@ -98,8 +103,9 @@ module board_top #(
   assign led_error_o = led_error ^ LedLow;
 
   // The pins as board_core takes them: high when pressed, tripped or on.
-  logic [5:0] operator;
-  assign operator = {optional_stop_pin_i, limit_y_pin_i, limit_x_pin_i, estop_pin_i, start_pin_i,
+  logic [9:0] operator;
+  assign operator = {optional_stop_pin_i, limit_y_pin_i, limit_x_pin_i, estop_pin_i, rapid_cycle_pin_i,
+                     feed_reset_pin_i, feed_down_pin_i, feed_up_pin_i, start_pin_i,
                      hold_pin_i} ~^ OperatorActiveHigh;
 
   /* verilator lint_off PINCONNECTEMPTY */
@@ -113,8 +119,9 @@ module board_top #(
     .rapid_step_i(ModulusWidth'(RapidStep)), .accel_step_i(ModulusWidth'(AccelStep)),
     .setup_cycles_i(StretchWidth'(SetupCycles)), .pulse_cycles_i(StretchWidth'(PulseCycles)),
     .low_cycles_i(StretchWidth'(LowCycles)),
-    .hold_i(operator[0]), .start_i(operator[1]), .estop_i(operator[2]), .limit_x_i(operator[3]),
-    .limit_y_i(operator[4]), .optional_stop_i(operator[5]),
+    .hold_i(operator[0]), .start_i(operator[1]), .feed_up_i(operator[2]), .feed_down_i(operator[3]),
+    .feed_reset_i(operator[4]), .rapid_cycle_i(operator[5]), .estop_i(operator[6]),
+    .limit_x_i(operator[7]), .limit_y_i(operator[8]), .optional_stop_i(operator[9]),
     .rx_i(uart_rx_i), .tx_o(uart_tx_o), .cts_no(uart_cts_no),
     .step_x_o, .dir_x_o, .step_y_o, .dir_y_o, .tool_o,
     .led_busy_o(led_busy), .led_done_o(led_done), .led_error_o(led_error),

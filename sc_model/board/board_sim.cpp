@@ -96,20 +96,101 @@ InterpOutputs interp_outputs(const Model& m, const InterpConfig& cfg) {
 // board_core's DebounceWidth (the boards' buttons are sampled every 2^16 clocks).
 constexpr unsigned kBoardDebounceWidth = 16;
 
-// The pin an event presses. Throws std::invalid_argument for an override (no pin).
-int operator_pin(OperatorEvent::Kind kind) {
-  switch (kind) {
-    case OperatorEvent::kHold: return kPinHold;
-    case OperatorEvent::kStart: return kPinStart;
-    case OperatorEvent::kEStop: return kPinEStop;
-    case OperatorEvent::kLimitX: return kPinLimitX;
-    case OperatorEvent::kLimitY: return kPinLimitY;
-    case OperatorEvent::kOptionalStop: return kPinOptionalStop;
-    default: break;
+// The operator at the board's pins (rtl/board/operator_pins.sv). A switch event sets its
+// pin's level. A button event presses buttons: a press holds the pin down three debounce
+// sample periods and lets it up three more, so that the next press counts. override=P
+// presses the feed override's 100 % button, or +10 % or -10 % as often as it takes from
+// where the presses before left it; rapid-override=P steps the rapid override's button to
+// P. Override presses queue one after another, each button's presses too.
+class OperatorHands {
+ public:
+  // Throws std::invalid_argument for an override the buttons cannot set.
+  explicit OperatorHands(const std::vector<OperatorEvent>& events) : events_(events) {
+    unsigned tens = kTensAt100, rapid = 0;
+    for (const OperatorEvent& e : events_) plan_override(e, tens, rapid);  // checks them
   }
-  throw std::invalid_argument(
-      "--events: the boards take no override yet: they have no pins for one (docs/motion-control.md)");
-}
+
+  // The pins at `cycle` (the events up to it applied; cycles rise call by call).
+  const std::array<bool, kOperatorPins>& at(uint64_t cycle) {
+    for (; next_ < events_.size() && events_[next_].cycle <= cycle; ++next_) apply(events_[next_], cycle);
+    for (int p = 0; p < kOperatorButtons; ++p) {
+      std::deque<uint64_t>& q = presses_[p];
+      while (!q.empty() && cycle >= q.front() + kDown) q.pop_front();
+      pins_[p] = !q.empty() && cycle >= q.front();
+    }
+    return pins_;
+  }
+  // An event or a press still to come.
+  bool busy() const {
+    if (next_ < events_.size()) return true;
+    for (const auto& q : presses_)
+      if (!q.empty()) return true;
+    return false;
+  }
+  // A cycle start still to come (an event or a press not yet let up).
+  bool start_to_come() const {
+    for (size_t i = next_; i < events_.size(); ++i)
+      if (events_[i].kind == OperatorEvent::kStart) return true;
+    return !presses_[kPinStart].empty();
+  }
+
+ private:
+  static constexpr uint64_t kDown = 3ull << kBoardDebounceWidth, kPress = 2 * kDown;
+  static constexpr unsigned kTensAt100 = 10;
+
+  // An override event's presses: how often which button, from the state (tens, rapid) the
+  // presses before left, which it updates. Throws for a value the buttons do not reach.
+  static std::pair<int, unsigned> plan_override(const OperatorEvent& e, unsigned& tens, unsigned& rapid) {
+    if (e.kind == OperatorEvent::kRapidOverride) {
+      const unsigned to = e.value == kOverrideOne ? 0 : e.value == kOverrideOne / 2 ? 1 : 2;
+      const unsigned n = (to + 3 - rapid) % 3;
+      rapid = to;
+      return {kPinRapid, n};
+    }
+    if (e.kind != OperatorEvent::kFeedOverride) return {-1, 0};
+    for (unsigned t = 0; t <= kOverrideTens; ++t) {
+      if (override_units(10.0 * t) != e.value) continue;
+      const unsigned from = tens;
+      tens = t;
+      if (t == from) return {kPinFeedReset, 0};
+      if (t == kTensAt100) return {kPinFeedReset, 1};
+      return t > from ? std::pair<int, unsigned>{kPinFeedUp, t - from} : std::pair<int, unsigned>{kPinFeedDown, from - t};
+    }
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.3g", e.value * 100.0 / kOverrideOne);
+    throw std::invalid_argument(std::string("--events: the board's feed override buttons step by 10 % (0, 10, ..., "
+                                            "200 %): an override of ") + percent + " % is none of their steps");
+  }
+
+  void press(int pin, unsigned times, uint64_t cycle, uint64_t& free_at) {
+    uint64_t t = std::max(cycle, free_at);
+    for (unsigned i = 0; i < times; ++i, t += kPress) presses_[pin].push_back(t);
+    free_at = t;
+  }
+
+  void apply(const OperatorEvent& e, uint64_t cycle) {
+    switch (e.kind) {
+      case OperatorEvent::kHold: return press(kPinHold, 1, cycle, free_at_[kPinHold]);
+      case OperatorEvent::kStart: return press(kPinStart, 1, cycle, free_at_[kPinStart]);
+      case OperatorEvent::kEStop: pins_[kPinEStop] = true; return;
+      case OperatorEvent::kLimitX: pins_[kPinLimitX] = true; return;
+      case OperatorEvent::kLimitY: pins_[kPinLimitY] = true; return;
+      case OperatorEvent::kOptionalStop: pins_[kPinOptionalStop] = e.value != 0; return;
+      case OperatorEvent::kFeedOverride:
+      case OperatorEvent::kRapidOverride: {
+        const auto [pin, times] = plan_override(e, tens_, rapid_);
+        return press(pin, times, cycle, override_free_at_);
+      }
+    }
+  }
+
+  std::vector<OperatorEvent> events_;
+  size_t next_ = 0;
+  std::array<bool, kOperatorPins> pins_{};
+  std::array<std::deque<uint64_t>, kOperatorButtons> presses_;  // press starts, per button
+  uint64_t free_at_[kOperatorButtons] = {}, override_free_at_ = 0;
+  unsigned tens_ = kTensAt100, rapid_ = 0;  // the overrides as the presses leave them
+};
 
 template <class Model>
 class Runner {
@@ -153,30 +234,22 @@ class Runner {
     const uint64_t byte_cycles = 10ull * c_.bit_cycles;
     uint64_t final_deadline = 0;
 
-    size_t next_event = 0;
-    std::array<bool, kOperatorPins> pins{};
-    uint64_t release_at[kOperatorPins] = {};
-    size_t last_start = o_.events.size();  // the last cycle start press (none: size())
-    for (size_t i = 0; i < o_.events.size(); ++i)
-      if (o_.events[i].kind == OperatorEvent::kStart) last_start = i;
+    OperatorHands hands(o_.events);
 
     while (!final_line) {
       // The operator's pins at this clock.
-      for (int p : {kPinHold, kPinStart})
-        if (pins[p] && cycle_ >= release_at[p]) pins[p] = false;
-      for (; next_event < o_.events.size() && o_.events[next_event].cycle <= cycle_; ++next_event) {
-        const OperatorEvent& e = o_.events[next_event];
-        const int pin = operator_pin(e.kind);
-        pins[pin] = e.kind != OperatorEvent::kOptionalStop || e.value != 0;
-        release_at[pin] = cycle_ + (3ull << kBoardDebounceWidth);
-      }
+      const std::array<bool, kOperatorPins>& pins = hands.at(cycle_);
       m.hold_i = pins[kPinHold];
       m.start_i = pins[kPinStart];
+      m.feed_up_i = pins[kPinFeedUp];
+      m.feed_down_i = pins[kPinFeedDown];
+      m.feed_reset_i = pins[kPinFeedReset];
+      m.rapid_cycle_i = pins[kPinRapid];
       m.estop_i = pins[kPinEStop];
       m.limit_x_i = pins[kPinLimitX];
       m.limit_y_i = pins[kPinLimitY];
       m.optional_stop_i = pins[kPinOptionalStop];
-      if (last.paused && (last_start == o_.events.size() || (next_event > last_start && !pins[kPinStart]))) {
+      if (last.paused && !hands.start_to_come()) {
         r.paused = true;  // no cycle start to come: the program waits for good
         break;
       }
@@ -194,7 +267,7 @@ class Runner {
           if (!sender_seen) pty_.release_slave();
           sender_seen = true;
           idle_since = std::chrono::steady_clock::now();
-        } else if (sender_seen && next_event < o_.events.size()) {
+        } else if (sender_seen && hands.busy()) {
           // An operator's event is still to come: the board waits for it, not for the
           // sender; simulate on at full speed.
         } else if (board_idle || !sender_seen) {
@@ -387,7 +460,7 @@ BoardSimResult run_board_sim(const BoardSimOptions& o,
   const InterpConfig cfg = board_interp_config(board_named(o.board), o.clock_hz, o.accel_mm_s2, o.rapid_mm_min);
   if (!o.events.empty() && !board_named(o.board).operator_pins)
     throw std::invalid_argument("--events: the " + o.board + "'s core is built without the operator's pins (docs/board.md)");
-  for (const OperatorEvent& e : o.events) operator_pin(e.kind);
+  OperatorHands check(o.events);  // an override the buttons cannot set is refused here
   std::unique_ptr<AtomicOutputFile> vcd_file;
   std::unique_ptr<VerilatedVcdC> vcd;
   if (!o.vcd_path.empty()) vcd_file = std::make_unique<AtomicOutputFile>(o.vcd_path);

@@ -1,16 +1,23 @@
 // Golden twin of rtl/board/operator_pins.sv: the board's operator pins as interp_top's
 // inputs.
-// Idea: the RTL's two synchronizer stages, its shared prescaler and the buttons' last
-// sample, debounced level and press, with the same update rules, compared every clock by
-// tests/sc_model/board/test_board_lockstep.cpp.
+// Idea: the RTL's two synchronizer stages, its shared prescaler, the buttons' last sample,
+// debounced level and press, and the override counts, with the same update rules, compared
+// every clock by tests/sc_model/board/test_board_lockstep.cpp.
 #pragma once
 #include <array>
 #include <cstdint>
 
+#include "feed_override.h"
+
 namespace ncinterp::board {
 
-// The pins in the RTL's synchronizer order (active high: pressed, tripped, on).
-enum OperatorPin { kPinHold, kPinStart, kPinEStop, kPinLimitX, kPinLimitY, kPinOptionalStop, kOperatorPins };
+// The pins in the RTL's synchronizer order, the buttons first (active high: pressed,
+// tripped, on).
+enum OperatorPin {
+  kPinHold, kPinStart, kPinFeedUp, kPinFeedDown, kPinFeedReset, kPinRapid,
+  kPinEStop, kPinLimitX, kPinLimitY, kPinOptionalStop, kOperatorPins
+};
+constexpr int kOperatorButtons = kPinRapid + 1;
 
 class OperatorPinsModel {
  public:
@@ -18,6 +25,8 @@ class OperatorPinsModel {
 
   bool hold() const { return press_[kPinHold]; }
   bool start() const { return press_[kPinStart]; }
+  uint16_t feed_override() const { return feed_override_; }
+  uint16_t rapid_override() const { return static_cast<uint16_t>(kOverrideOne >> rapid_); }
   bool estop() const { return sync_[kPinEStop]; }
   bool limit_x() const { return sync_[kPinLimitX]; }
   bool limit_y() const { return sync_[kPinLimitY]; }
@@ -27,13 +36,17 @@ class OperatorPinsModel {
   void tick(const std::array<bool, kOperatorPins>& pins) {
     const bool tick = prescale_ == mask_;
     prescale_ = (prescale_ + 1) & mask_;
-    press_ = {};
+    std::array<bool, kOperatorButtons> press{};
+    for (int b = 0; b < kOperatorButtons; ++b) press[b] = tick && sync_[b] && sample_[b] && !down_[b];
+    if (press[kPinFeedReset]) tens_ = kTensAt100;
+    else if (press[kPinFeedUp] && tens_ != kOverrideTens) ++tens_;
+    else if (press[kPinFeedDown] && tens_ != 0) --tens_;
+    if (press[kPinRapid]) rapid_ = rapid_ == 2 ? 0 : rapid_ + 1;
+    feed_override_ = override_units(10.0 * tens_);
+    press_ = press;
     if (tick) {
-      for (int b : {kPinHold, kPinStart}) {
-        if (sync_[b] == sample_[b]) {
-          press_[b] = sync_[b] && !down_[b];
-          down_[b] = sync_[b];
-        }
+      for (int b = 0; b < kOperatorButtons; ++b) {
+        if (sync_[b] == sample_[b]) down_[b] = sync_[b];
         sample_[b] = sync_[b];
       }
     }
@@ -42,9 +55,12 @@ class OperatorPinsModel {
   }
 
  private:
+  static constexpr unsigned kTensAt100 = 10;
   uint64_t mask_, prescale_ = 0;
   std::array<bool, kOperatorPins> meta_{}, sync_{};
-  std::array<bool, 2> sample_{}, down_{}, press_{};
+  std::array<bool, kOperatorButtons> sample_{}, down_{}, press_{};
+  unsigned tens_ = kTensAt100, rapid_ = 0;
+  uint16_t feed_override_ = kOverrideOne;
 };
 
 }  // namespace ncinterp::board

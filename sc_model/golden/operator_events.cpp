@@ -42,7 +42,7 @@ uint16_t parse_override(OperatorEvent::Kind kind, const std::string& percent, co
     throw bad("needs a percentage from 0 to 200 after =, e.g. override=50@1.5s");
   if (kind == OperatorEvent::kRapidOverride && p != 25 && p != 50 && p != 100)
     throw bad("needs 25, 50 or 100 after = (the rapid override's steps, ISO's and grbl's)");
-  return static_cast<uint16_t>(std::llround(p * kOverrideOne / 100));
+  return override_units(p);
 }
 
 // The kinds that set a level (=value) rather than press a button.

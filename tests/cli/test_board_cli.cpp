@@ -202,9 +202,31 @@ TEST_F(BoardCli, TheIcebreakersPinsHoldResumeAndStop) {
   EXPECT_EQ(run("board-sim --board icestick --events hold@1s --pty " + path("tty2")), 1);
   EXPECT_NE(stderr_.find("the icestick's core is built without the operator's pins"), std::string::npos)
       << stderr_;
-  EXPECT_EQ(run("board-sim --board icebreaker --events override=50@1s --pty " + path("tty2")), 1);
-  EXPECT_NE(stderr_.find("the boards take no override yet"), std::string::npos) << stderr_;
+  EXPECT_EQ(run("board-sim --board icebreaker --events override=55@1s --pty " + path("tty2")), 1);
+  EXPECT_NE(stderr_.find("an override of 54.7 % is none of their steps"), std::string::npos) << stderr_;
   EXPECT_FALSE(fs::exists(path("tty2")));
+}
+
+// The override buttons, pressed by board-sim --events: two presses of -10 % slow a slow
+// line (20 mm at 5 mm/s) to 80 %, and a press of 100 % later brings it back; the pulses
+// are play's, and the run takes longer than without the presses, less long with the
+// return to 100 %.
+TEST_F(BoardCli, TheIcebreakersOverrideButtonsScaleTheFeed) {
+  { std::ofstream(path("slow.nc")) << "%\nG17 G21 G91 G93\nN1 G01 X20.000 Y5.000 F15.000\nM02\n%\n"; }
+  const nlohmann::json p = play(path("slow.nc"));
+  ASSERT_EQ(send_to_board(path("slow.nc"), "--board icebreaker", ""), 0) << send_err_ << board_err_;
+  const double plain = board_["cycles"];
+  ASSERT_EQ(send_to_board(path("slow.nc"), "--board icebreaker --events override=80@0.2s", ""), 0) << board_err_;
+  expect_same_motion(p);
+  const double slowed = board_["cycles"];
+  ASSERT_EQ(send_to_board(path("slow.nc"), "--board icebreaker --events override=80@0.2s,override=100@2s", ""), 0)
+      << board_err_;
+  expect_same_motion(p);
+  const double back = board_["cycles"];
+  // At 80 % from about 0.7 s (two presses) on: about a quarter longer for the rest of the 4 s.
+  EXPECT_GT(slowed, plain + 0.6e6);
+  EXPECT_LT(back, slowed - 0.2e6);
+  EXPECT_GT(back, plain + 0.2e6);
 }
 
 // On the iCEBreaker an M00 waits for the cycle start button: with no press to come the

@@ -279,7 +279,18 @@ std::string package(const std::string& tape_dir) {
       << "  localparam int OverrideFracBits = " << ncinterp::kOverrideFracBits << ";\n"
       << "  localparam logic [OverrideWidth-1:0] OverrideOne = " << ncinterp::kOverrideWidth << "'d"
       << ncinterp::kOverrideOne << ";\n"
-      << "  /* verilator lint_on UNUSEDPARAM */\n";
+      << "  localparam int OverrideTens = " << ncinterp::kOverrideTens << ";\n"
+      << "  /* verilator lint_on UNUSEDPARAM */\n"
+      << "  // The boards' feed override buttons: 10 % a step; tens (0 to OverrideTens) as the\n"
+      << "  // override, rounded as the command line rounds a percentage.\n"
+      << "  function automatic logic [OverrideWidth-1:0] override_of_tens(input logic [4:0] tens);\n"
+      << "    case (tens)\n";
+  for (unsigned t = 0; t <= ncinterp::kOverrideTens; ++t)
+    out << "      5'd" << t << ": override_of_tens = " << ncinterp::kOverrideWidth << "'d"
+        << ncinterp::override_units(10.0 * t) << ";\n";
+  out << "      default: override_of_tens = OverrideOne;\n"
+      << "    endcase\n"
+      << "  endfunction\n";
   out << "\n"
          "  // Error codes: error_code_o (0 while error_o is low).\n"
          "  localparam int ErrCodeWidth = "

@@ -30,6 +30,9 @@ std::string yosys_script(const BoardTarget& b, const std::string& json) {
        (b.board.circle_mode ? "1" : "0") + " -set MiscFunctions " + (b.board.misc_functions ? "1" : "0") +
        " -set AccelMmS2 " + std::to_string(static_cast<long>(b.board.accel_mm_s2)) +
        " -set OperatorPins " + (b.board.operator_pins ? "1" : "0") + " board_top";
+  // A board without the operator's pins has no such ports: its .pcf names none, and unused
+  // inputs would still move the LUT mapping of the whole part.
+  if (!b.board.operator_pins) s += "; hierarchy -top board_top; delete -port board_top/*_pin_i";
   // The project's synth_ice40 options (-abc9, timing-driven LUT mapping, is what makes 12 MHz
   // on the UP5K, docs/board.md); -dsp where the part has multipliers.
   s += "; synth_ice40 " + std::string(build::kSynthIce40Options) + (b.board.dsp ? " -dsp" : "") +

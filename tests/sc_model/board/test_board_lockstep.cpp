@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <deque>
 #include <random>
 
@@ -178,8 +179,9 @@ TEST(BoardLockstep, StepStretcherMatchesItsTwin) {
 // The pins at a 16-clock sample period (DebounceWidth 4): each round presses the buttons
 // and trips the switches at random, each change with a burst of bounces shorter than a
 // sample period. Every press of a button (down for two sample periods and more) is exactly
-// one clock of its output, whatever its bounces; the switches follow their pins through
-// two flip-flops.
+// one press, whatever its bounces: one clock of hold_o or start_o, one step of an
+// override; the overrides stay on their steps; the switches follow their pins through two
+// flip-flops.
 TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
   constexpr unsigned kWidth = 4, kPeriod = 1u << kWidth;
   std::mt19937_64 rng(17);
@@ -187,8 +189,11 @@ TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
   reset(rtl);
   OperatorPinsModel twin(kWidth);
   std::array<bool, kOperatorPins> pins{}, settled{}, before{};
-  std::array<uint64_t, 2> pressed{}, presses{};
+  std::array<uint64_t, kOperatorButtons> pressed{};
+  std::array<uint64_t, 2> presses{};
   std::array<uint64_t, kOperatorPins> settle_at{};
+  uint64_t override_changes = 0;
+  uint16_t last_override = twin.feed_override();
   for (uint64_t c = 1; c < 200000; ++c) {
     for (int p = 0; p < kOperatorPins; ++p) {
       // A change of a pin's settled level every ~50 sample periods, each level held three
@@ -196,12 +201,16 @@ TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
       if (c >= settle_at[p] + 3 * kPeriod && rng() % (50 * kPeriod) == 0) {
         settled[p] = !settled[p];
         settle_at[p] = c + rng() % (kPeriod / 2);
-        if (p < 2 && settled[p]) ++pressed[p];
+        if (p < kOperatorButtons && settled[p]) ++pressed[p];
       }
       pins[p] = c < settle_at[p] ? rng() % 2 == 0 : settled[p];
     }
     rtl.hold_i = pins[kPinHold];
     rtl.start_i = pins[kPinStart];
+    rtl.feed_up_i = pins[kPinFeedUp];
+    rtl.feed_down_i = pins[kPinFeedDown];
+    rtl.feed_reset_i = pins[kPinFeedReset];
+    rtl.rapid_cycle_i = pins[kPinRapid];
     rtl.estop_i = pins[kPinEStop];
     rtl.limit_x_i = pins[kPinLimitX];
     rtl.limit_y_i = pins[kPinLimitY];
@@ -210,23 +219,34 @@ TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
     twin.tick(pins);
     ASSERT_EQ(rtl.hold_o, twin.hold()) << "clock " << c;
     ASSERT_EQ(rtl.start_o, twin.start()) << "clock " << c;
+    ASSERT_EQ(rtl.feed_override_o, twin.feed_override()) << "clock " << c;
+    ASSERT_EQ(rtl.rapid_override_o, twin.rapid_override()) << "clock " << c;
     ASSERT_EQ(rtl.estop_o, twin.estop()) << "clock " << c;
     ASSERT_EQ(rtl.limit_x_o, twin.limit_x()) << "clock " << c;
     ASSERT_EQ(rtl.limit_y_o, twin.limit_y()) << "clock " << c;
     ASSERT_EQ(rtl.optional_stop_o, twin.optional_stop()) << "clock " << c;
     presses[0] += twin.hold();
     presses[1] += twin.start();
+    if (twin.feed_override() != last_override) ++override_changes;
+    last_override = twin.feed_override();
+    // The overrides on their steps: tens of percent, and 100, 50, 25 %.
+    ASSERT_EQ(twin.feed_override(), override_units(std::round(twin.feed_override() * 10.0 / kOverrideOne) * 10))
+        << "clock " << c;
+    ASSERT_TRUE(twin.rapid_override() == 128 || twin.rapid_override() == 64 || twin.rapid_override() == 32);
     // The switches: the pin as the edge before took it (two flip-flops).
     ASSERT_EQ(twin.estop(), before[kPinEStop]) << "clock " << c;
     ASSERT_EQ(twin.limit_y(), before[kPinLimitY]) << "clock " << c;
     before = pins;
   }
-  // Every settled press is one press; the last one may still be in the debouncer.
+  // Every settled press is one press; the last one may still be in the debouncer. An
+  // override moves at most once per press of its buttons.
   for (int b = 0; b < 2; ++b) {
     EXPECT_GT(pressed[b], 50u);
     EXPECT_LE(presses[b], pressed[b]) << "button " << b;
     EXPECT_GE(presses[b] + 1, pressed[b]) << "button " << b;
   }
+  EXPECT_GT(override_changes, 50u);
+  EXPECT_LE(override_changes, pressed[kPinFeedUp] + pressed[kPinFeedDown] + pressed[kPinFeedReset]);
 }
 
 }  // namespace
