@@ -185,7 +185,9 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
                    " while the block moves " + axis_name(a) + " by " + std::to_string(d[a]));
     }
     if (pulsed) on_pulse(cycle, step, dir);
-    if (pulsed && o.tool != results_[cur_].tool)
+    // At a stop's clock the tool goes off with the error, while that clock may still pulse
+    // (the stop rule allows none after it).
+    if (pulsed && o.tool != results_[cur_].tool && cycle < options_.stop_cycle)
       report(Rule::kTool, cycle,
              std::string("tool_o = ") + (o.tool ? "1" : "0") + " at a pulse of a block the tape has the tool " +
                  (results_[cur_].tool ? "on (after M03)" : "off"));

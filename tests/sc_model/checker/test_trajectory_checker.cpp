@@ -243,6 +243,34 @@ TEST(TrajectoryChecker, ToolOutputFollowsTheTapesM03AndM05) {
   }
 }
 
+// An E-stop switches the tool off with its error, at its own clock, and that clock may
+// still pulse (the stop rule allows none after it): stops pressed at clocks that pulse, in
+// a program with the tool on throughout, pass (found by the operator soak).
+TEST(TrajectoryChecker, AStopSwitchesTheToolOffAtItsClockWhichMayStillPulse) {
+  for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
+    std::mt19937 rng(23);
+    CheckSetup setup = at_1mhz(arch, 0);
+    tape::Program p = operator_program(rng, setup, 4);
+    p.blocks.front().tool_on = true;
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min);
+    cfg.arch = arch;
+    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1, nullptr, {});
+    int stops = 0;
+    for (size_t t = 10000; t < trace.size() && stops < 12; ++t) {
+      if (!(trace[t].step_x || trace[t].step_y)) continue;
+      ++stops;
+      for (uint64_t pressed : {t - 1, t}) {
+        setup.events = {{pressed, OperatorEvent::kEStop}};
+        const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
+        ASSERT_TRUE(out.passed()) << arch_name(arch) << " stop at " << pressed << ": " << first_violation(*out.checker);
+        EXPECT_TRUE(out.checker->stopped());
+        EXPECT_FALSE(out.run.last.tool);
+      }
+    }
+    EXPECT_EQ(stops, 12) << arch_name(arch);
+  }
+}
+
 // Overrides in check (--events): runs at 200 %, at 30 % and changing mid-block pass every
 // rule on both archs; a checker not told of the 200 % finds the parallel player's blocks
 // shorter than documented (the duration rule, and only it).
