@@ -9,7 +9,8 @@
 // the interpolator, docs/board.md), and feed_modulus = 60 * ClockHz * 10^3 makes every
 // block last its programmed 1/F minute. The reset is held for 15 clocks after
 // configuration (the iCE40's flip-flops start at their initial values). LEDs are active
-// high or low (LedActiveLow); step/dir and the tool output go to the PMOD header.
+// high or low (LedActiveLow, a bit per LED); step/dir and the tool output go to the PMOD
+// header.
 // Step timing parameters (ns) and what drivers need (docs/board.md): DRV8825 STEP high and
 // low >= 1.9 us, DIR setup and hold >= 650 ns; TB6600 (TB67S109-based modules) pulse >= 2.5 us,
 // DIR >= 5 us ahead of the pulse. The defaults suit the DRV8825 (2 us pulse, 1 us setup).
@@ -23,8 +24,9 @@ module board_top #(
   parameter int     LowNs      = 2_000,
   parameter int     DirSetupNs = 1_000,
   parameter int     DirHoldNs  = 1_000,
-  // The iCEBreaker's LEDs light on a low pin, the iCEstick's on a high one.
-  parameter int     LedActiveLow = 0,
+  // Which LEDs light on a low pin, {error, done, busy}: the iCEBreaker's red and green (on
+  // the main board); its break-off board's and the iCEstick's light on a high pin.
+  parameter logic [2:0] LedActiveLow = 3'b000,
   // The interpolator's configuration (interp_top's BitSerial, CircleMode, MiscFunctions;
   // AccelMmS2 below is its Accel).
   parameter bit     BitSerial  = 1'b1,
@@ -97,10 +99,9 @@ module board_top #(
   always_ff @(posedge clk_i) if (por_q != 4'hf) por_q <= por_q + 1'b1;
 
   logic led_busy, led_done, led_error;
-  localparam logic LedLow = LedActiveLow != 0;
-  assign led_busy_o  = led_busy ^ LedLow;
-  assign led_done_o  = led_done ^ LedLow;
-  assign led_error_o = led_error ^ LedLow;
+  assign led_busy_o  = led_busy ^ LedActiveLow[0];
+  assign led_done_o  = led_done ^ LedActiveLow[1];
+  assign led_error_o = led_error ^ LedActiveLow[2];
 
   // The pins as board_core takes them: high when pressed, tripped or on.
   logic [9:0] operator;

@@ -11,8 +11,8 @@ const std::vector<Board>& boards() {
   // (docs/board.md); the iCEBreaker ramps at 500 mm/s^2, what a small stepper machine
   // takes (docs/motion-control.md 7).
   static const std::vector<Board> list = {
-      {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, false, "rtscts", Arch::kSerial, false, false, 0, false},
-      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, true, "xonxoff", Arch::kSerial, true, true, 500, true},
+      {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, 0, "rtscts", Arch::kSerial, false, false, 0, false},
+      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, 0b110, "xonxoff", Arch::kSerial, true, true, 500, true},
   };
   return list;
 }

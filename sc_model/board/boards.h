@@ -19,7 +19,7 @@ struct Board {
   std::string package;         // "tq144"
   double clock_hz = 12e6;      // the oscillator
   bool dsp = false;            // the part has multipliers (synth_ice40 -dsp)
-  bool led_active_low = false; // board_top's LedActiveLow
+  unsigned led_active_low = 0; // board_top's LedActiveLow: {error, done, busy}, 1 = lit by a low pin
   std::string flow;            // what its USB-serial chip honours: "rtscts" or "xonxoff"
   Arch arch = Arch::kSerial;   // board_top's BitSerial
   bool circle_mode = true;     // board_top's CircleMode

@@ -25,7 +25,7 @@ std::string yosys_script(const BoardTarget& b, const std::string& json) {
   std::string s = "read_verilog -sv -I\"" + std::string(build::kBoardRtlDir) + "\"";
   for (const char* f : build::kRtlSources) s += std::string(" \"") + f + "\"";
   for (const char* f : build::kBoardSources) s += std::string(" \"") + f + "\"";
-  s += "; chparam -set LedActiveLow " + std::string(b.board.led_active_low ? "1" : "0") +
+  s += "; chparam -set LedActiveLow " + std::to_string(b.board.led_active_low) +
        " -set BitSerial " + (b.board.arch == Arch::kSerial ? "1" : "0") + " -set CircleMode " +
        (b.board.circle_mode ? "1" : "0") + " -set MiscFunctions " + (b.board.misc_functions ? "1" : "0") +
        " -set AccelMmS2 " + std::to_string(static_cast<long>(b.board.accel_mm_s2)) +
