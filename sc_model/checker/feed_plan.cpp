@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include "arc_geometry.h"
 #include "bit_length.h"
@@ -119,8 +118,7 @@ uint64_t block_iterations(const tape::Block& b, const InterpConfig& cfg) {
 FeedPlan plan_feed(const tape::Program& program, const InterpConfig& config, double clock_hz,
                    const FeedPlanOptions& o) {
   InterpConfig cfg = config;
-  cfg.accel_step = InterpConfig::accel_step_for(o.accel_mm_s2, clock_hz, cfg.frac_digits, cfg.feed_modulus);
-  if (cfg.accel_step == 0) throw std::invalid_argument("--accel: below one ramp step at this clock");
+  cfg.accel_step = ramp_step(o.accel_mm_s2, clock_hz, cfg);
   const double m = static_cast<double>(cfg.feed_modulus), du = static_cast<double>(cfg.accel_step);
   const unsigned lead_bits = SerialDda::player_lead_bits(cfg);
   const double cap = static_cast<double>((cfg.feed_modulus - 1) >> std::max(lead_bits, 1u));

@@ -24,19 +24,21 @@ InterpConfig interp_config(double clock_hz, const tape::Format& format, double r
   cfg.misc_functions = format.misc_functions;
   cfg.feed_modulus = InterpConfig::feed_modulus_for(clock_hz, format.feed_frac_digits);
   cfg.rapid_step = InterpConfig::rapid_step_for(rapid_mm_min, format.frac_digits, format.feed_frac_digits);
-  if (accel_mm_s2 > 0) {
-    cfg.accel_step =
-        InterpConfig::accel_step_for(accel_mm_s2, clock_hz, format.frac_digits, cfg.feed_modulus);
-    if (cfg.accel_step == 0) {
-      // One step du = 1 stands for f^2 / (10^frac_digits M) mm/s^2.
-      const double smallest = clock_hz * clock_hz / std::pow(10.0, format.frac_digits) /
-                              static_cast<double>(cfg.feed_modulus);
-      throw std::invalid_argument("--accel " + std::to_string(accel_mm_s2) +
-                                  " mm/s^2 is below one ramp step at this clock: the smallest is " +
-                                  std::to_string(smallest) + " mm/s^2");
-    }
-  }
+  if (accel_mm_s2 > 0) cfg.accel_step = ramp_step(accel_mm_s2, clock_hz, cfg);
   return cfg;
+}
+
+uint64_t ramp_step(double accel_mm_s2, double clock_hz, const InterpConfig& cfg) {
+  const uint64_t du = InterpConfig::accel_step_for(accel_mm_s2, clock_hz, cfg.frac_digits, cfg.feed_modulus);
+  if (du == 0) {
+    // One step du = 1 stands for f^2 / (10^frac_digits M) mm/s^2.
+    const double smallest =
+        clock_hz * clock_hz / std::pow(10.0, cfg.frac_digits) / static_cast<double>(cfg.feed_modulus);
+    throw std::invalid_argument("--accel " + std::to_string(accel_mm_s2) +
+                                " mm/s^2 is below one ramp step at this clock: the smallest is " +
+                                std::to_string(smallest) + " mm/s^2");
+  }
+  return du;
 }
 
 tape::Format tape_format_of(const InterpConfig& cfg) {

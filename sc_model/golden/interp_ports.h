@@ -134,6 +134,9 @@ inline unsigned __int128 line_step(const tape::Block& b, const InterpConfig& cfg
 // accel_mm_s2 > 0: the feed ramp at that acceleration limit (accel_step_for()); 0: none.
 InterpConfig interp_config(double clock_hz, const tape::Format& format = {},
                            double rapid_mm_min = kDefaultRapidMmMin, double accel_mm_s2 = 0);
+// The ramp step du of an acceleration limit on `cfg` at clock_hz (accel_step_for());
+// throws std::invalid_argument, naming the smallest limit, for one below a step.
+uint64_t ramp_step(double accel_mm_s2, double clock_hz, const InterpConfig& cfg);
 // The tape format an interpolator with `cfg` decodes (the inverse of interp_config).
 tape::Format tape_format_of(const InterpConfig& cfg);
 
