@@ -4,10 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <sstream>
-
-#include "feed_plan.h"
 
 namespace ncinterp::checker {
 namespace {
@@ -75,21 +72,11 @@ FeedSummary feed_summary(const TrajectoryChecker& c) {
   return s;
 }
 
-// With the ramp and no operator: the feed plan's cycle time at exact stop, which the run
-// confirms (feed_plan.h) from its first block's load on (the plan has no tape reader).
+// The run's time from its first block's load on, which CheckOutcome::planned_seconds
+// foretells (the plan has no tape reader).
 double playing_seconds(const TrajectoryChecker& c, const CheckSetup& setup) {
   const uint64_t first = c.results().empty() ? 0 : c.results().front().load_cycle;
   return static_cast<double>(c.cycles() - std::min(first, c.cycles())) / setup.clock_hz;
-}
-
-std::optional<double> planned_seconds(const CheckOutcome& o, const CheckSetup& setup) {
-  if (setup.accel_mm_s2 <= 0 || !setup.events.empty()) return std::nullopt;
-  InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min);
-  cfg.arch = setup.arch;
-  FeedPlanOptions plan;
-  plan.accel_mm_s2 = setup.accel_mm_s2;
-  plan.lookaheads.clear();
-  return plan_feed(o.program, cfg, setup.clock_hz, plan).exact_stop_s;
 }
 
 json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
@@ -112,8 +99,8 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
   j["blocks"] = c.blocks().size();
   j["cycles"] = c.cycles();
   j["cycle_seconds"] = static_cast<double>(c.cycles()) / ctx.setup.clock_hz;
-  if (const auto planned = planned_seconds(o, ctx.setup))
-    j["feed_plan"] = {{"planned_seconds", *planned}, {"played_seconds", playing_seconds(c, ctx.setup)}};
+  if (o.planned_seconds)
+    j["feed_plan"] = {{"planned_seconds", *o.planned_seconds}, {"played_seconds", playing_seconds(c, ctx.setup)}};
   if (ctx.setup.accel_mm_s2 > 0) {
     const AccelSummary a = accel_summary(c, ctx.setup, o.blu_mm);
     j["acceleration"] = {{"limit_mm_s2", a.limit_mm_s2},
@@ -242,9 +229,9 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
       << fmt("%.1f", a.max_mm_s2[1]) << " mm/s^2, limit " << fmt("%g", a.limit_mm_s2)
       << " mm/s^2; worst " << fmt("%.2f", a.worst_ratio) << " of limit + allowance\n";
   }
-  if (const auto planned = planned_seconds(o, ctx.setup))
+  if (o.planned_seconds)
     s << "  from the first block's load: " << fmt("%.3f", playing_seconds(c, ctx.setup))
-      << " s played, " << fmt("%.3f", *planned) << " s in the feed plan (exact stop)\n";
+      << " s played, " << fmt("%.3f", *o.planned_seconds) << " s in the feed plan (exact stop)\n";
   for (const HoldStop& h : c.hold_stops()) {
     s << "  hold at " << fmt("%.6g", h.pressed / ctx.setup.clock_hz) << " s: at rest "
       << fmt("%.3g", (h.at_rest - h.pressed) / ctx.setup.clock_hz) << " s later at ("

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "arc_prepare.h"
+#include "feed_plan.h"
 #include "chords/chord_planner.h"
 #include "frame_source.h"
 #include "line_schedule.h"
@@ -182,6 +183,12 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   checker.finish(out.run.last);
   if (out.reference) checker.check_tolerance(out.tol_blu);
+  if (setup.accel_mm_s2 > 0 && setup.events.empty()) {
+    FeedPlanOptions plan;
+    plan.accel_mm_s2 = setup.accel_mm_s2;
+    plan.lookaheads.clear();
+    out.planned_seconds = plan_feed(out.program, cfg, setup.clock_hz, plan).exact_stop_s;
+  }
   return out;
 }
 

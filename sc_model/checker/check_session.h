@@ -61,6 +61,9 @@ struct CheckOutcome {
   double seconds = 0.0;     // wall time of the engine run with the checker
   double tol_blu = 0.0;
   double blu_mm = 0.001;
+  // With the ramp and no operator: the feed plan's cycle time at exact stop (feed_plan.h),
+  // which the run confirms from its first block's load on (check_report.h).
+  std::optional<double> planned_seconds;
   // No rule failed and the total error is within the tolerance.
   bool passed() const { return checker && checker->violation_count() == 0; }
 };
