@@ -92,6 +92,10 @@ package interp_pkg;
   localparam int OverrideFracBits = 7;
   localparam logic [OverrideWidth-1:0] OverrideOne = 9'd128;
   localparam int OverrideTens = 20;
+  localparam int OverrideTensAtOne = 10;
+  // The boards' operator buttons: sampled every 2^OperatorDebounceWidth clocks
+  // (operator_panel.h).
+  localparam int OperatorDebounceWidth = 16;
   /* verilator lint_on UNUSEDPARAM */
   // The boards' feed override buttons: 10 % a step; tens (0 to OverrideTens) as the
   // override, rounded as the command line rounds a percentage.

@@ -54,7 +54,7 @@ module board_core #(
   // pause ends at once.
   parameter bit OperatorPins = 1'b1,
   // The buttons' debounce sample period, 2^DebounceWidth clocks (5.5 ms at 12 MHz).
-  parameter int DebounceWidth = 16,
+  parameter int DebounceWidth = interp_pkg::OperatorDebounceWidth,
   // The interpolator's widths on the board (+-524 mm of travel at 1 um, N and the frame
   // offset below 2^20), as the golden model's board configuration has them
   // (sc_model/board/boards.cpp); the status line sends their low bits.

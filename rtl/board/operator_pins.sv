@@ -21,7 +21,7 @@
 // Timing: every output is a register (the rapid override: a constant shifted by one).
 // Golden twin: OperatorPinsModel (sc_model/board/operator_pins_model.h).
 module operator_pins #(
-  parameter int DebounceWidth = 16
+  parameter int DebounceWidth = interp_pkg::OperatorDebounceWidth
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -49,7 +49,6 @@ module operator_pins #(
   localparam int Buttons = 6, Pins = 10;
   localparam int BHold = 0, BStart = 1, BFeedUp = 2, BFeedDown = 3, BFeedReset = 4, BRapid = 5;
   localparam int SEStop = 6, SLimitX = 7, SLimitY = 8, SOptionalStop = 9;
-  localparam logic [4:0] TensAt100 = 5'd10;
   logic [Pins-1:0] meta_q, sync_q;
   // The buttons: the last sample, the debounced level, the press.
   logic [Buttons-1:0] sample_q, down_q, press, press_q;
@@ -57,6 +56,7 @@ module operator_pins #(
   logic tick;
   // The feed override in tens of percent; the rapid override's step (0: 100 %, 1: 50 %,
   // 2: 25 %); both outputs.
+  localparam logic [4:0] TensAtOne = 5'(interp_pkg::OverrideTensAtOne);
   logic [4:0] tens_q, tens_d;
   logic [1:0] rapid_q, rapid_d;
   logic [interp_pkg::OverrideWidth-1:0] feed_override_q;
@@ -66,7 +66,7 @@ module operator_pins #(
   always_comb begin
     for (int b = 0; b < Buttons; b++)
       press[b] = tick && sync_q[b] && sample_q[b] && !down_q[b];
-    tens_d = press[BFeedReset]                                         ? TensAt100
+    tens_d = press[BFeedReset]                                         ? TensAtOne
            : press[BFeedUp] && tens_q != 5'(interp_pkg::OverrideTens) ? tens_q + 1'b1
            : press[BFeedDown] && tens_q != '0                          ? tens_q - 1'b1
            :                                                             tens_q;
@@ -81,7 +81,7 @@ module operator_pins #(
       down_q          <= '0;
       press_q         <= '0;
       prescale_q      <= '0;
-      tens_q          <= TensAt100;
+      tens_q          <= TensAtOne;
       rapid_q         <= '0;
       feed_override_q <= interp_pkg::OverrideOne;
     end else begin

@@ -23,6 +23,7 @@
 #include "Vboard_icestick_trace.h"
 #include "boards.h"
 #include "atomic_file.h"
+#include "operator_panel.h"
 #include "operator_pins_model.h"
 #include "play_monitor.h"
 #include "play_report.h"
@@ -93,9 +94,6 @@ InterpOutputs interp_outputs(const Model& m, const InterpConfig& cfg) {
   return o;
 }
 
-// board_core's DebounceWidth (the boards' buttons are sampled every 2^16 clocks).
-constexpr unsigned kBoardDebounceWidth = 16;
-
 // The operator at the board's pins (rtl/board/operator_pins.sv). A switch event sets its
 // pin's level. A button event presses buttons: a press holds the pin down three debounce
 // sample periods and lets it up three more, so that the next press counts. override=P
@@ -106,7 +104,7 @@ class OperatorHands {
  public:
   // Throws std::invalid_argument for an override the buttons cannot set.
   explicit OperatorHands(const std::vector<OperatorEvent>& events) : events_(events) {
-    unsigned tens = kTensAt100, rapid = 0;
+    unsigned tens = kOverrideTensAtOne, rapid = 0;
     for (const OperatorEvent& e : events_) plan_override(e, tens, rapid);  // checks them
   }
 
@@ -135,8 +133,7 @@ class OperatorHands {
   }
 
  private:
-  static constexpr uint64_t kDown = 3ull << kBoardDebounceWidth, kPress = 2 * kDown;
-  static constexpr unsigned kTensAt100 = 10;
+  static constexpr uint64_t kDown = 3ull << kOperatorDebounceWidth, kPress = 2 * kDown;
 
   // An override event's presses: how often which button, from the state (tens, rapid) the
   // presses before left, which it updates. Throws for a value the buttons do not reach.
@@ -153,7 +150,7 @@ class OperatorHands {
       const unsigned from = tens;
       tens = t;
       if (t == from) return {kPinFeedReset, 0};
-      if (t == kTensAt100) return {kPinFeedReset, 1};
+      if (t == kOverrideTensAtOne) return {kPinFeedReset, 1};
       return t > from ? std::pair<int, unsigned>{kPinFeedUp, t - from} : std::pair<int, unsigned>{kPinFeedDown, from - t};
     }
     char percent[32];
@@ -189,7 +186,7 @@ class OperatorHands {
   std::array<bool, kOperatorPins> pins_{};
   std::array<std::deque<uint64_t>, kOperatorButtons> presses_;  // press starts, per button
   uint64_t free_at_[kOperatorButtons] = {}, override_free_at_ = 0;
-  unsigned tens_ = kTensAt100, rapid_ = 0;  // the overrides as the presses leave them
+  unsigned tens_ = kOverrideTensAtOne, rapid_ = 0;  // the overrides as the presses leave them
 };
 
 template <class Model>

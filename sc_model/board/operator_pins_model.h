@@ -38,7 +38,7 @@ class OperatorPinsModel {
     prescale_ = (prescale_ + 1) & mask_;
     std::array<bool, kOperatorButtons> press{};
     for (int b = 0; b < kOperatorButtons; ++b) press[b] = tick && sync_[b] && sample_[b] && !down_[b];
-    if (press[kPinFeedReset]) tens_ = kTensAt100;
+    if (press[kPinFeedReset]) tens_ = kOverrideTensAtOne;
     else if (press[kPinFeedUp] && tens_ != kOverrideTens) ++tens_;
     else if (press[kPinFeedDown] && tens_ != 0) --tens_;
     if (press[kPinRapid]) rapid_ = rapid_ == 2 ? 0 : rapid_ + 1;
@@ -55,11 +55,10 @@ class OperatorPinsModel {
   }
 
  private:
-  static constexpr unsigned kTensAt100 = 10;
   uint64_t mask_, prescale_ = 0;
   std::array<bool, kOperatorPins> meta_{}, sync_{};
   std::array<bool, kOperatorButtons> sample_{}, down_{}, press_{};
-  unsigned tens_ = kTensAt100, rapid_ = 0;
+  unsigned tens_ = kOverrideTensAtOne, rapid_ = 0;
   uint16_t feed_override_ = kOverrideOne;
 };
 

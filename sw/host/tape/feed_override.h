@@ -15,8 +15,9 @@ namespace ncinterp {
 constexpr unsigned kOverrideFracBits = 7;
 constexpr unsigned kOverrideOne = 1u << kOverrideFracBits;  // 100 %
 constexpr unsigned kOverrideWidth = kOverrideFracBits + 2;  // up to 200 % (2 * kOverrideOne)
-// The feed override buttons' steps: 10 % each, 0 to 200 %.
+// The feed override buttons' steps: 10 % each, 0 to 200 %, 100 % at reset.
 constexpr unsigned kOverrideTens = 20;
+constexpr unsigned kOverrideTensAtOne = kOverrideTens / 2;
 
 // A percentage (0 to 200) in units of 1 / kOverrideOne, rounded to the nearest.
 inline uint16_t override_units(double percent) {

@@ -21,6 +21,7 @@
 
 #include "atomic_file.h"
 #include "feed_override.h"
+#include "operator_panel.h"
 
 namespace {
 
@@ -280,6 +281,10 @@ std::string package(const std::string& tape_dir) {
       << "  localparam logic [OverrideWidth-1:0] OverrideOne = " << ncinterp::kOverrideWidth << "'d"
       << ncinterp::kOverrideOne << ";\n"
       << "  localparam int OverrideTens = " << ncinterp::kOverrideTens << ";\n"
+      << "  localparam int OverrideTensAtOne = " << ncinterp::kOverrideTensAtOne << ";\n"
+      << "  // The boards' operator buttons: sampled every 2^OperatorDebounceWidth clocks\n"
+      << "  // (operator_panel.h).\n"
+      << "  localparam int OperatorDebounceWidth = " << ncinterp::kOperatorDebounceWidth << ";\n"
       << "  /* verilator lint_on UNUSEDPARAM */\n"
       << "  // The boards' feed override buttons: 10 % a step; tens (0 to OverrideTens) as the\n"
       << "  // override, rounded as the command line rounds a percentage.\n"
