@@ -178,15 +178,41 @@ package interp_pkg;
   localparam logic [7:0] LinkEndOfTape = 8'h84;  // EOT with its ISO 840 parity bit: the tape's end
   localparam logic [7:0] LinkXon       = 8'h11;  // XON: the board can take more bytes
   localparam logic [7:0] LinkXoff      = 8'h13;  // XOFF: the board's FIFO is filling, stop sending
-  localparam logic [7:0] BoardErrFifoOverflow = 8'h10;  // the board's tape FIFO overflowed (flow control failed)
-  localparam logic [7:0] BoardErrFraming      = 8'h11;  // UART framing error (wrong baud rate or a broken line)
-  localparam logic [7:0] BoardErrStepOverrun  = 8'h12;  // a step pulse was lost: steps came faster than the driver timing allows
+  localparam logic [7:0] LinkAck       = 8'h06;  // ACK: the board has taken AckBytes more bytes out of its tape FIFO
+  localparam int LinkFifoBytes = 32'd256;  // the board's tape FIFO, bytes
+  localparam int LinkAckBytes  = 32'd32;   // tape bytes taken out of the FIFO per ACK
+  localparam logic [7:0] RealtimeHold       = 8'h68;  // key 'h': feed hold: brake to rest mid-block
+  localparam logic [7:0] RealtimeStart      = 8'h73;  // key 's': cycle start: resume after a hold or a pause (M00, M01)
+  localparam logic [7:0] RealtimeFeedUp     = 8'h5d;  // key '+': feed override +10 % (up to 200 %)
+  localparam logic [7:0] RealtimeFeedDown   = 8'h5b;  // key '-': feed override -10 % (down to 0 %)
+  localparam logic [7:0] RealtimeFeedReset  = 8'h3d;  // key '=': feed override 100 %
+  localparam logic [7:0] RealtimeRapidCycle = 8'h67;  // key 'g': rapid override's next step: 100, 50, 25, 100 % ...
+  localparam logic [7:0] RealtimeEStop      = 8'h58;  // key 'x': E-stop: no pulse after the documented clocks, until reset
+  localparam logic [7:0] BoardErrFifoOverflow = 8'h20;  // the board's tape FIFO overflowed (flow control failed)
+  localparam logic [7:0] BoardErrFraming      = 8'h21;  // UART framing error (wrong baud rate or a broken line)
+  localparam logic [7:0] BoardErrStepOverrun  = 8'h22;  // a step pulse was lost: steps came faster than the driver timing allows
+  localparam logic [7:0] BoardErrLoneRealtime = 8'h23;  // a realtime byte came without its twin (a line error, or a sender that does not double them)
   localparam logic [7:0] StatusBlock = 8'h42;  // the machine has moved: the block playing (or last played) N, X, Y
   localparam logic [7:0] StatusDone  = 8'h44;  // the program is done: the last block's N, X, Y
   localparam logic [7:0] StatusError = 8'h45;  // the machine stopped on an error: the bad block's N, the frame offset, the code
   localparam int StatusBlockDigits = 2;
   localparam int StatusDigits = 3;
   /* verilator lint_on UNUSEDPARAM */
+  // The realtime commands, one bit each in the list's order: the one a byte is (0: a
+  // byte that is none). Literals, not the names above: see the code functions.
+  localparam int RealtimeCommands = 7;
+  function automatic logic [RealtimeCommands-1:0] realtime_command(input logic [7:0] b);
+    case (b)
+      8'h68: realtime_command = 7'b0000001;  // Hold
+      8'h73: realtime_command = 7'b0000010;  // Start
+      8'h5d: realtime_command = 7'b0000100;  // FeedUp
+      8'h5b: realtime_command = 7'b0001000;  // FeedDown
+      8'h3d: realtime_command = 7'b0010000;  // FeedReset
+      8'h67: realtime_command = 7'b0100000;  // RapidCycle
+      8'h58: realtime_command = 7'b1000000;  // EStop
+      default: realtime_command = '0;
+    endcase
+  endfunction
 
 endpackage
 

@@ -8,10 +8,13 @@
 // tape_end_i, so the program is done after M02/M30, and a tape cut short before that is an
 // error, as on a real reader. Flow control (docs/board.md): cts_no (to the host UART's
 // CTS#, active low) goes high while the FIFO holds CtsStopLevel bytes or more, and XOFF /
-// XON go out on TX when the level crosses XoffLevel / XonLevel.
+// XON go out on TX when the level crosses XoffLevel / XonLevel. With RealtimeBytes,
+// host_link takes the host's realtime commands out of the received bytes (they drive
+// operator_pins as its buttons do) and the status line acknowledges every LinkAckBytes
+// bytes taken out of the FIFO, so the host can count characters instead.
 // Board errors join the interpolator's (error LED and an "E" status line): the FIFO
 // overflowed (flow control failed), a UART framing error, a step pulse was lost (steps
-// faster than the driver timing allows), codes interp_pkg::BoardErr* (the link's list,
+// faster than the driver timing allows), a realtime byte came alone, codes interp_pkg::BoardErr* (the link's list,
 // sw/host/tape/board_link.def); their block is the current block_n and their offset the
 // number of bytes the FIFO took before the error.
 // The interpolator is built as the board's configuration asks (arch, circle mode), with
@@ -28,7 +31,7 @@
 // Golden twins: GoldenInterp for interp_top (board-sim compares nothing itself: it replays
 // the outputs into the play monitors), the UART and stretcher models of sc_model/board/.
 module board_core #(
-  parameter int FifoAddrWidth = 8,
+  parameter int FifoAddrWidth = $clog2(interp_pkg::LinkFifoBytes),
   parameter int CtsStopLevel  = 240,
   parameter int XoffLevel     = 128,
   parameter int XonLevel      = 32,
@@ -53,6 +56,9 @@ module board_core #(
   // the machine but reset, the overrides are 100 %, and cycle start is held pressed: a
   // pause ends at once.
   parameter bit OperatorPins = 1'b1,
+  // Realtime bytes on the link and character counting (host_link.sv): the host's commands
+  // act as the operator's buttons, so only with them.
+  parameter bit RealtimeBytes = OperatorPins,
   // The buttons' debounce sample period, 2^DebounceWidth clocks (5.5 ms at 12 MHz).
   parameter int DebounceWidth = interp_pkg::OperatorDebounceWidth,
   // The interpolator's widths on the board (+-524 mm of travel at 1 um, N and the frame
@@ -119,7 +125,8 @@ module board_core #(
   output logic        obs_paused_o,
   output logic [FifoAddrWidth:0] obs_fifo_level_o,
   output logic [7:0]  obs_rx_data_o,
-  output logic        obs_rx_valid_o,
+  output logic        obs_rx_valid_o,   // a received tape frame (not a realtime byte)
+  output logic [interp_pkg::RealtimeCommands-1:0] obs_realtime_o,  // a realtime command
   output logic [7:0]  board_error_code_o
 );
 
@@ -129,6 +136,10 @@ module board_core #(
 
   logic [7:0]             rx_data, fifo_data;
   logic                   rx_valid, rx_ferr, fifo_valid, fifo_ready, overflow;
+  // host_link's: the received byte is a frame, a command, a lone realtime byte, an ACK to
+  // send (ack), sent (ack_sent).
+  logic                   rx_frame, lone, ack, ack_sent;
+  logic [interp_pkg::RealtimeCommands-1:0] command;
   logic [FifoAddrWidth:0] stored, level;
   logic [FieldWidth-1:0]  written;
   logic                   frame_ready, frame_valid, eot;
@@ -150,10 +161,24 @@ module board_core #(
     .data_o(rx_data), .valid_o(rx_valid), .frame_error_o(rx_ferr)
   );
 
+  if (RealtimeBytes) begin : g_realtime
+    host_link u_link (
+      .clk_i, .rst_ni, .rx_data_i(rx_data), .rx_valid_i(rx_valid),
+      .taken_i(fifo_valid && fifo_ready), .ack_sent_i(ack_sent),
+      .frame_o(rx_frame), .command_o(command), .lone_o(lone), .ack_o(ack)
+    );
+  end else begin : g_no_realtime
+    assign rx_frame = 1'b1;
+    assign command  = '0;
+    assign {lone, ack} = '0;
+    logic unused_ack_sent;  // never, with ack low
+    assign unused_ack_sent = ack_sent;
+  end
+
   // After a board error no byte is taken: the error line's offset stays the bytes
   // written before it.
   byte_fifo #(.AddrWidth(FifoAddrWidth), .CountWidth(FieldWidth)) u_fifo (
-    .clk_i, .rst_ni, .in_data_i(rx_data), .in_valid_i(rx_valid && board_err_q == '0),
+    .clk_i, .rst_ni, .in_data_i(rx_data), .in_valid_i(rx_valid && rx_frame && board_err_q == '0),
     .out_data_o(fifo_data), .out_valid_o(fifo_valid), .out_ready_i(fifo_ready),
     .stored_o(stored), .level_o(level), .written_o(written), .overflow_o(overflow)
   );
@@ -178,7 +203,7 @@ module board_core #(
   if (OperatorPins) begin : g_pins
     operator_pins #(.DebounceWidth(DebounceWidth)) u_pins (
       .clk_i, .rst_ni, .hold_i, .start_i, .feed_up_i, .feed_down_i, .feed_reset_i, .rapid_cycle_i,
-      .estop_i, .limit_x_i, .limit_y_i, .optional_stop_i,
+      .estop_i, .limit_x_i, .limit_y_i, .optional_stop_i, .remote_i(command),
       .hold_o(op_hold), .start_o(op_start), .feed_override_o(op_feed_override),
       .rapid_override_o(op_rapid_override), .estop_o(op_estop), .limit_x_o(op_limit_x),
       .limit_y_o(op_limit_y), .optional_stop_o(op_optional_stop)
@@ -190,7 +215,7 @@ module board_core #(
     assign op_rapid_override = interp_pkg::OverrideOne;
     logic unused_pins;
     assign unused_pins = &{1'b0, hold_i, start_i, feed_up_i, feed_down_i, feed_reset_i, rapid_cycle_i,
-                           estop_i, limit_x_i, limit_y_i, optional_stop_i};
+                           estop_i, limit_x_i, limit_y_i, optional_stop_i, command};
   end
 
   interp_top #(
@@ -242,7 +267,7 @@ module board_core #(
     .block_n_i(BlockWidth'(i_block_n)), .pos_x_i(FieldWidth'(i_pos_x)),
     .pos_y_i(FieldWidth'(i_pos_y)), .done_i(i_done), .error_i(any_error),
     .error_code_i(line_code), .error_block_i(line_block), .error_offset_i(line_offset),
-    .xoff_i(xoff_q), .tx_o
+    .xoff_i(xoff_q), .ack_i(ack), .ack_sent_o(ack_sent), .tx_o
   );
 
   always_ff @(posedge clk_i) begin
@@ -261,6 +286,7 @@ module board_core #(
       if (board_err_q == '0 && !i_error) begin
         if (overflow) board_err_q <= interp_pkg::BoardErrFifoOverflow;
         else if (rx_ferr) board_err_q <= interp_pkg::BoardErrFraming;
+        else if (lone) board_err_q <= interp_pkg::BoardErrLoneRealtime;
         else if (overrun_x || overrun_y) board_err_q <= interp_pkg::BoardErrStepOverrun;
       end
     end
@@ -291,7 +317,8 @@ module board_core #(
   assign obs_paused_o         = i_paused;
   assign obs_fifo_level_o     = level;
   assign obs_rx_data_o        = rx_data;
-  assign obs_rx_valid_o       = rx_valid;
+  assign obs_rx_valid_o       = rx_valid && rx_frame;
+  assign obs_realtime_o       = command;
   assign board_error_code_o   = board_err_q;
 
 endmodule

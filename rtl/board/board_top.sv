@@ -130,7 +130,7 @@ module board_top #(
     .obs_pos_x_o(), .obs_pos_y_o(), .obs_block_n_o(), .obs_busy_o(), .obs_done_o(),
     .obs_error_o(), .obs_error_code_o(), .obs_error_block_o(), .obs_error_offset_o(),
     .obs_feed_saturated_o(), .obs_tool_o(), .obs_paused_o(), .obs_fifo_level_o(), .obs_rx_data_o(),
-    .obs_rx_valid_o(), .board_error_code_o()
+    .obs_rx_valid_o(), .obs_realtime_o(), .board_error_code_o()
   );
   /* verilator lint_on PINCONNECTEMPTY */
 

@@ -17,8 +17,12 @@
 // and its output is interp_pkg::override_of_tens() of the count, the rounding of the
 // command line's override=P; the rapid override steps 100, 50, 25, 100 % ... (ISO's and
 // grbl's steps).
+// The host's realtime commands (remote_i, host_link.sv) are presses too, one clock each, in
+// interp_pkg::realtime_command()'s order: the buttons', then the E-stop, which stops the
+// machine as the switch does (interp_top latches it).
 // Inputs are active high (pressed, tripped, on): board_top turns each pin's polarity.
-// Timing: every output is a register (the rapid override: a constant shifted by one).
+// Timing: every output is a register (the rapid override: a constant shifted by one; the
+// E-stop: the OR of the pin's and the host's).
 // Golden twin: OperatorPinsModel (sc_model/board/operator_pins_model.h).
 module operator_pins #(
   parameter int DebounceWidth = interp_pkg::OperatorDebounceWidth
@@ -35,6 +39,7 @@ module operator_pins #(
   input  logic limit_x_i,
   input  logic limit_y_i,
   input  logic optional_stop_i,
+  input  logic [interp_pkg::RealtimeCommands-1:0] remote_i,
   output logic hold_o,
   output logic start_o,
   output logic [interp_pkg::OverrideWidth-1:0] feed_override_o,
@@ -50,8 +55,10 @@ module operator_pins #(
   localparam int BHold = 0, BStart = 1, BFeedUp = 2, BFeedDown = 3, BFeedReset = 4, BRapid = 5;
   localparam int SEStop = 6, SLimitX = 7, SLimitY = 8, SOptionalStop = 9;
   logic [Pins-1:0] meta_q, sync_q;
-  // The buttons: the last sample, the debounced level, the press.
-  logic [Buttons-1:0] sample_q, down_q, press, press_q;
+  // The buttons: the last sample, the debounced level, a pin's press, any press (the pin's
+  // or the host's).
+  logic [Buttons-1:0] sample_q, down_q, pin_press, press, press_q;
+  logic               remote_estop_q;
   logic [DebounceWidth-1:0] prescale_q;
   logic tick;
   // The feed override in tens of percent; the rapid override's step (0: 100 %, 1: 50 %,
@@ -65,7 +72,8 @@ module operator_pins #(
 
   always_comb begin
     for (int b = 0; b < Buttons; b++)
-      press[b] = tick && sync_q[b] && sample_q[b] && !down_q[b];
+      pin_press[b] = tick && sync_q[b] && sample_q[b] && !down_q[b];
+    press = pin_press | remote_i[Buttons-1:0];
     tens_d = press[BFeedReset]                                         ? TensAtOne
            : press[BFeedUp] && tens_q != 5'(interp_pkg::OverrideTens) ? tens_q + 1'b1
            : press[BFeedDown] && tens_q != '0                          ? tens_q - 1'b1
@@ -80,6 +88,7 @@ module operator_pins #(
       sample_q        <= '0;
       down_q          <= '0;
       press_q         <= '0;
+      remote_estop_q  <= 1'b0;
       prescale_q      <= '0;
       tens_q          <= TensAtOne;
       rapid_q         <= '0;
@@ -90,6 +99,7 @@ module operator_pins #(
       sync_q     <= meta_q;
       prescale_q <= prescale_q + 1'b1;
       press_q    <= press;
+      remote_estop_q <= remote_i[Buttons];
       if (tick) begin
         sample_q <= sync_q[Buttons-1:0];
         for (int b = 0; b < Buttons; b++)
@@ -102,14 +112,16 @@ module operator_pins #(
   end
 
 `ifndef SYNTHESIS
-  // Checked at every edge of every verilated run: a press comes only with its button down
-  // and lasts one clock (the next tick is 2^DebounceWidth clocks away), the one clock of
-  // hold_i or start_i that interp_top takes for a press; the overrides stay in range.
-  logic [Buttons-1:0] press_prev_q;
+  // Checked at every edge of every verilated run: a pin's press comes only with its button
+  // down and lasts one clock (the next tick is 2^DebounceWidth clocks away), and so does
+  // the host's (its pairs of bytes are a byte time apart): the one clock of hold_i or start_i
+  // that interp_top takes for a press; the overrides stay in range.
+  logic [Buttons-1:0] pin_press_q, press_prev_q;
   always_ff @(posedge clk_i) begin
+    pin_press_q  <= pin_press;
     press_prev_q <= press_q;
     if (rst_ni) begin
-      a_press_when_down: assert ((press_q & ~down_q) == '0);
+      a_press_when_down: assert ((pin_press_q & ~down_q) == '0);
       a_press_one_clock: assert ((press_q & press_prev_q) == '0);
       a_override_range: assert (tens_q <= 5'(interp_pkg::OverrideTens) && rapid_q != 2'd3);
     end
@@ -120,7 +132,7 @@ module operator_pins #(
   assign start_o          = press_q[BStart];
   assign feed_override_o  = feed_override_q;
   assign rapid_override_o = interp_pkg::OverrideOne >> rapid_q;
-  assign estop_o          = sync_q[SEStop];
+  assign estop_o          = sync_q[SEStop] || remote_estop_q;
   assign limit_x_o        = sync_q[SLimitX];
   assign limit_y_o        = sync_q[SLimitY];
   assign optional_stop_o  = sync_q[SOptionalStop];

@@ -1,4 +1,4 @@
-// Status lines and XON/XOFF on the board's UART TX line (8N1), with their transmitter.
+// Status lines, XON/XOFF and ACK on the board's UART TX line (8N1), with their transmitter.
 //
 // What: fixed-layout lines (interp_pkg::Status*, from sw/host/tape/board_link.def): a kind
 // letter, a block field of StatusBlockDigits digits, two fields of StatusDigits digits,
@@ -18,9 +18,10 @@
 // with the final position; blocks shorter than a line time are not seen (the host names
 // the block ends it sees). The error line and the done line are sent once each, the error
 // line first; a line that starts takes the place of any pending B line (each carries N and
-// the position, the E line N). No character of a line is XON, XOFF, CR or LF but its end.
+// the position, the E line N). No character of a line is XON, XOFF, ACK, CR or LF but its end.
 // Flow control has priority: when xoff_i changes, XOFF or XON goes out before the next
-// character of a line.
+// character of a line, and then, while ack_i asks, an ACK (character counting, host_link.sv;
+// ack_sent_o at its first clock).
 // Idea (lean): one shift register holds N, X and Y, copied when a line starts, each nibble
 // bit-reversed, and moves one place per bit sent of a digit, so the bit on the line is its
 // top bit: no multiplexer picks a digit out of moving fields, no transmitter holds a copy
@@ -55,6 +56,8 @@ module status_line #(
   input  logic [BlockWidth-1:0] error_block_i,
   input  logic [FieldWidth-1:0] error_offset_i,
   input  logic                  xoff_i,
+  input  logic                  ack_i,
+  output logic                  ack_sent_o,
   output logic                  tx_o
 );
 
@@ -75,12 +78,14 @@ module status_line #(
   logic [IndexWidth-1:0] index_q;
   logic [Fields-1:0]     fields_q;
   // The character on the line (sending_q): bit_q 0 the start bit, 1..8 the data bits, 9
-  // the stop bit; count_q clocks left of the bit; flow_q it is XON/XOFF (told_xoff_q).
-  logic                  sending_q, flow_q, told_xoff_q, tx_q;
+  // the stop bit; count_q clocks left of the bit; flow_q it is XON/XOFF (told_xoff_q) or,
+  // with ack_q, ACK.
+  logic                  sending_q, flow_q, ack_q, told_xoff_q, tx_q;
   logic [3:0]            bit_q;
   logic [DivWidth-1:0]   count_q;
 
-  logic                  start_line, start_error, start_done, flow_byte, char_start, bit_end;
+  logic                  start_line, start_error, start_done, flow_change, flow_byte, char_start;
+  logic                  bit_end;
   logic                  shift;
   logic                  digit, digit_low, from_error, data_bit, line_bit;
   logic [2:0]            data_index;
@@ -107,7 +112,8 @@ module status_line #(
   assign data_index = 3'(bit_q - 4'd1);
   assign digit_low  = !flow_q && digit && !bit_q[3] && (bit_q[2] ? bit_q[1:0] == 2'd0 : bit_q[1:0] != 2'd0);
   always_comb begin
-    if (flow_q) fixed_char = told_xoff_q ? interp_pkg::LinkXoff : interp_pkg::LinkXon;
+    if (flow_q) fixed_char = ack_q ? interp_pkg::LinkAck :
+                             told_xoff_q ? interp_pkg::LinkXoff : interp_pkg::LinkXon;
     else if (index_q == '0) fixed_char = error_line_q ? interp_pkg::StatusError :
                                          done_line_q ? interp_pkg::StatusDone :
                                          interp_pkg::StatusBlock;
@@ -134,11 +140,14 @@ module status_line #(
   // The start bit, the data bits, the stop bit; idle high.
   assign line_bit = !sending_q || bit_q == 4'd9 || (bit_q != '0 && data_bit);
 
-  // The next line: an error, the end, or a move; the next character: XON/XOFF first.
+  // The next line: an error, the end, or a move; the next character: XON/XOFF first, then
+  // ACK.
   assign start_line  = !active_q && (pend_error_q || pend_done_q || moved_q);
   assign start_error = start_line && pend_error_q;
   assign start_done  = start_line && !pend_error_q && pend_done_q;
-  assign flow_byte   = xoff_i != told_xoff_q;
+  assign flow_change = xoff_i != told_xoff_q;
+  assign flow_byte   = flow_change || ack_i;
+  assign ack_sent_o  = !sending_q && !flow_change && ack_i;
   assign char_start  = !sending_q && (flow_byte || active_q);
   assign bit_end     = sending_q && count_q == '0;
   assign shift       = bit_end && digit_low;
@@ -164,6 +173,7 @@ module status_line #(
       index_q      <= '0;
       sending_q    <= 1'b0;
       flow_q       <= 1'b0;
+      ack_q        <= 1'b0;
       told_xoff_q  <= 1'b0;
       bit_q        <= '0;
       count_q      <= '0;
@@ -181,7 +191,8 @@ module status_line #(
       if (char_start) begin
         sending_q <= 1'b1;
         flow_q    <= flow_byte;
-        if (flow_byte) told_xoff_q <= xoff_i;
+        ack_q     <= !flow_change;
+        if (flow_change) told_xoff_q <= xoff_i;
         bit_q     <= '0;
         count_q   <= bit_cycles_i - 1'b1;
       end else if (sending_q) begin

@@ -219,6 +219,7 @@ class Runner {
   BoardSimResult run() {
     BoardSimResult r;
     r.bit_cycles = c_.bit_cycles;
+    r.realtime.assign(kRealtimeCommandCount, 0);
     Model& m = *m_;
     UartTxModel host_tx;
     UartRxModel host_rx;
@@ -280,7 +281,7 @@ class Runner {
 
       // One clock: host-side UART and board sample the values before the edge.
       const bool board_tx = m.tx_o, cts_n = m.cts_no;
-      const bool allowed = o_.flow == Flow::kRtsCts ? !cts_n : !stopped_by_xoff;
+      const bool allowed = o_.flow == Flow::kRtsCts ? !cts_n : o_.flow == Flow::kXonXoff ? !stopped_by_xoff : true;
       const bool offer = host_tx.ready() && !in.empty() && allowed;
       if (host_tx.ready() && !in.empty() && !allowed) ++r.flow_hold_cycles;
       m.rx_i = host_tx.tx();
@@ -296,6 +297,8 @@ class Runner {
           ++r.xoff_sent;
         } else if (b == kLinkXon) {
           stopped_by_xoff = false;
+        } else if (b == kLinkAck) {
+          ++r.acks_sent;
         } else if (b == '\n') {
           if (!line.empty() && line.back() == '\r') line.pop_back();
           r.status_lines.push_back(line);
@@ -305,8 +308,10 @@ class Runner {
           line += static_cast<char>(b);
         }
       }
-      // The frames the board received (its receiver's bytes; the EOT frame is not one).
+      // The frames the board received (not its realtime bytes; the EOT frame is not one),
+      // and the realtime commands it took.
       if (m.obs_rx_valid_o && m.obs_rx_data_o != kLinkEndOfTape) r.frames.push_back(m.obs_rx_data_o);
+      for (int i = 0; i < kRealtimeCommandCount; ++i) r.realtime[i] += m.obs_realtime_o >> i & 1;
       r.max_fifo_level = std::max<unsigned>(r.max_fifo_level, m.obs_fifo_level_o);
       r.board_error = m.board_error_code_o;
 
@@ -321,9 +326,10 @@ class Runner {
       if (o_.max_cycles && cycle_ >= o_.max_cycles) break;
     }
     // The last status bytes, then wait (bounded) for the sender to read them and close;
-    // not after a pause, which no final line follows.
+    // only after a final line (no sender waits for more after it; after a pause or at the
+    // cycle limit one would, and closing the pty tells it the board is gone).
     const auto t0 = std::chrono::steady_clock::now();
-    while (!r.paused && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5)) {
+    while (final_line && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(5)) {
       flush(out);
       if (!out.empty()) {
         usleep(1000);
@@ -427,6 +433,16 @@ BoardSimResult run_with(const BoardSimOptions& o, const CoreConfig& c, const Int
 
 }  // namespace
 
+Flow flow_named(const std::string& name) {
+  for (Flow f : {Flow::kRtsCts, Flow::kXonXoff, Flow::kCount})
+    if (name == flow_name(f)) return f;
+  throw std::invalid_argument("unknown flow control '" + name + "' (rtscts, xonxoff, count)");
+}
+
+const char* flow_name(Flow f) {
+  return f == Flow::kRtsCts ? "rtscts" : f == Flow::kXonXoff ? "xonxoff" : "count";
+}
+
 CoreConfig core_config(const BoardSimOptions& o) {
   if (!(o.clock_hz >= 1e5 && o.clock_hz <= 1e9)) throw std::runtime_error("--clock-hz must be between 1e5 and 1e9");
   if (o.baud == 0) throw std::runtime_error("--baud must be positive");
@@ -481,14 +497,18 @@ nlohmann::json board_sim_report(const BoardSimResult& r, const BoardSimOptions& 
   j["board"] = {{"name", o.board},
                 {"baud", o.baud},
                 {"bit_cycles", r.bit_cycles},
-                {"flow", o.flow == Flow::kRtsCts ? "rtscts" : "xonxoff"},
+                {"flow", flow_name(o.flow)},
                 {"frames_received", r.frames.size()},
                 {"max_fifo_level", r.max_fifo_level},
                 {"flow_hold_cycles", r.flow_hold_cycles},
                 {"xoff_sent", r.xoff_sent},
+                {"acks_sent", r.acks_sent},
                 {"board_error", r.board_error},
                 {"status_lines", r.status_lines},
                 {"timed_out", r.timed_out}};
+  nlohmann::json realtime = nlohmann::json::object();
+  for (int i = 0; i < kRealtimeCommandCount; ++i) realtime[kRealtimeCommands[i].name] = r.realtime[i];
+  j["board"]["realtime_commands"] = realtime;
   if (r.board_error) {
     j["status"] = "error";
     j["error"] = {{"code", r.board_error}, {"message", board_error_message(r.board_error)}};

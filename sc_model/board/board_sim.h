@@ -5,7 +5,8 @@
 // UART transmitter (UartTxModel) sends the bytes the sender wrote into the pty on the
 // board's RX pin at the simulated baud rate, one after another, and stops before a byte
 // while the board holds CTS# high (RTS/CTS) or after the board sent XOFF until XON
-// (XON/XOFF), as the FT2232H does in hardware with CRTSCTS or IXON set. Its host-side
+// (XON/XOFF), as the FT2232H does in hardware with CRTSCTS or IXON set; with character
+// counting it holds nothing back (the sender counts the board's ACKs). Its host-side
 // receiver (UartRxModel) decodes the board's TX pin and writes every byte into the pty. A
 // pty has no baud rate and no CTS line, so the wire's pacing and the flow control live
 // here; the kernel's pty buffer is the USB chip's buffer and blocks a fast sender.
@@ -32,7 +33,11 @@
 
 namespace ncinterp::board {
 
-enum class Flow { kRtsCts, kXonXoff };
+// The flow control the chip honours: RTS/CTS, XON/XOFF, or none (the sender counts the
+// board's ACKs: character counting, which lets realtime bytes through a held machine).
+enum class Flow { kRtsCts, kXonXoff, kCount };
+Flow flow_named(const std::string& name);  // "rtscts", "xonxoff", "count"
+const char* flow_name(Flow f);
 
 struct BoardSimOptions {
   std::string board = "icestick";
@@ -59,6 +64,8 @@ struct BoardSimResult {
   unsigned max_fifo_level = 0;
   uint64_t flow_hold_cycles = 0;        // clocks a byte waited for CTS# low or XON
   uint64_t xoff_sent = 0;               // XOFF bytes the board sent
+  uint64_t acks_sent = 0;               // ACK bytes the board sent
+  std::vector<uint64_t> realtime;       // the realtime commands the board took, per command
   uint16_t bit_cycles = 0;
   bool timed_out = false;               // the sender went quiet before the end
   bool paused = false;                  // paused with no cycle start to come

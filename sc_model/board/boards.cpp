@@ -6,13 +6,15 @@
 namespace ncinterp::board {
 
 const std::vector<Board>& boards() {
-  // The iCEstick's FTDI channel B has CTS wired; the iCEBreaker's has only RX and TX. The
+  // The iCEstick's FTDI channel B has CTS wired; the iCEBreaker's has only RX and TX, and
+  // its core counts characters (it ACKs the bytes it takes), which lets realtime bytes
+  // through while the machine holds. The
   // iCEstick's HX1K has room for neither arcs, the M words nor the feed ramp
   // (docs/board.md); the iCEBreaker ramps at 500 mm/s^2, what a small stepper machine
   // takes (docs/motion-control.md 7).
   static const std::vector<Board> list = {
       {"icestick", "HX1K", "--hx1k", "tq144", 12e6, false, 0, "rtscts", Arch::kSerial, false, false, 0, false},
-      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, 0b110, "xonxoff", Arch::kSerial, true, true, 500, true},
+      {"icebreaker", "UP5K", "--up5k", "sg48", 12e6, true, 0b110, "count", Arch::kSerial, true, true, 500, true},
   };
   return list;
 }

@@ -20,7 +20,7 @@ struct Board {
   double clock_hz = 12e6;      // the oscillator
   bool dsp = false;            // the part has multipliers (synth_ice40 -dsp)
   unsigned led_active_low = 0; // board_top's LedActiveLow: {error, done, busy}, 1 = lit by a low pin
-  std::string flow;            // what its USB-serial chip honours: "rtscts" or "xonxoff"
+  std::string flow;            // its flow control (board_sim.h Flow): "rtscts", "xonxoff" or "count"
   Arch arch = Arch::kSerial;   // board_top's BitSerial
   bool circle_mode = true;     // board_top's CircleMode
   bool misc_functions = true;  // board_top's MiscFunctions (M00, M01, M03, M05)

@@ -1,7 +1,8 @@
 // Golden twin of rtl/board/operator_pins.sv: the board's operator pins as interp_top's
 // inputs.
 // Idea: the RTL's two synchronizer stages, its shared prescaler, the buttons' last sample,
-// debounced level and press, and the override counts, with the same update rules, compared
+// debounced level and press (a pin's or the host's), and the override counts, with the
+// same update rules, compared
 // every clock by tests/sc_model/board/test_board_lockstep.cpp.
 #pragma once
 #include <array>
@@ -27,17 +28,20 @@ class OperatorPinsModel {
   bool start() const { return press_[kPinStart]; }
   uint16_t feed_override() const { return feed_override_; }
   uint16_t rapid_override() const { return static_cast<uint16_t>(kOverrideOne >> rapid_); }
-  bool estop() const { return sync_[kPinEStop]; }
+  bool estop() const { return sync_[kPinEStop] || remote_estop_; }
   bool limit_x() const { return sync_[kPinLimitX]; }
   bool limit_y() const { return sync_[kPinLimitY]; }
   bool optional_stop() const { return sync_[kPinOptionalStop]; }
 
-  // One rising edge with the pins' levels.
-  void tick(const std::array<bool, kOperatorPins>& pins) {
+  // One rising edge with the pins' levels and the host's commands (remote: a bit each, the
+  // buttons' in pin order, then the E-stop; HostLinkModel::command()).
+  void tick(const std::array<bool, kOperatorPins>& pins, uint32_t remote = 0) {
     const bool tick = prescale_ == mask_;
     prescale_ = (prescale_ + 1) & mask_;
     std::array<bool, kOperatorButtons> press{};
-    for (int b = 0; b < kOperatorButtons; ++b) press[b] = tick && sync_[b] && sample_[b] && !down_[b];
+    for (int b = 0; b < kOperatorButtons; ++b)
+      press[b] = (tick && sync_[b] && sample_[b] && !down_[b]) || (remote >> b & 1);
+    remote_estop_ = remote >> kOperatorButtons & 1;
     if (press[kPinFeedReset]) tens_ = kOverrideTensAtOne;
     else if (press[kPinFeedUp] && tens_ != kOverrideTens) ++tens_;
     else if (press[kPinFeedDown] && tens_ != 0) --tens_;
@@ -58,6 +62,7 @@ class OperatorPinsModel {
   uint64_t mask_, prescale_ = 0;
   std::array<bool, kOperatorPins> meta_{}, sync_{};
   std::array<bool, kOperatorButtons> sample_{}, down_{}, press_{};
+  bool remote_estop_ = false;
   unsigned tens_ = kOverrideTensAtOne, rapid_ = 0;
   uint16_t feed_override_ = kOverrideOne;
 };

@@ -30,7 +30,9 @@ struct BoardSimArgs {
 int run(BoardSimArgs& a) {
   board::BoardSimOptions& o = a.options;
   if (a.flow.empty()) a.flow = board::board_named(o.board).flow;
-  o.flow = a.flow == "rtscts" ? board::Flow::kRtsCts : board::Flow::kXonXoff;
+  o.flow = board::flow_named(a.flow);
+  if (o.flow == board::Flow::kCount && !board::board_named(o.board).operator_pins)
+    throw std::invalid_argument("--flow count: the " + o.board + "'s core sends no ACKs (docs/board.md)");
   o.events = parse_events(a.events, o.clock_hz);
   const board::BoardSimResult r = board::run_board_sim(o, [&](const std::string& path) {
     std::printf("board-sim: %s on %s (%g Hz, %u baud, %s)\n", o.board.c_str(), path.c_str(), o.clock_hz,
@@ -82,9 +84,11 @@ void setup(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   add_rapid_option(cmd, o.rapid_mm_min);
   add_events_option(cmd, args->events);
-  cmd->add_option("--flow", args->flow, "Flow control the USB-serial chip honours: rtscts or xonxoff "
-                                        "(default: rtscts on the iCEstick, xonxoff on the iCEBreaker)")
-      ->check(CLI::IsMember({"rtscts", "xonxoff"}));
+  cmd->add_option("--flow", args->flow,
+                  "Flow control: rtscts or xonxoff (the USB-serial chip honours the board's), or count "
+                  "(none in the chip: the sender counts the board's ACKs) (default: rtscts on the "
+                  "iCEstick, count on the iCEBreaker)")
+      ->check(CLI::IsMember({"rtscts", "xonxoff", "count"}));
   cmd->add_option("--max-cycles", o.max_cycles, "Stop after this many clocks (0: no limit)")->capture_default_str();
   cmd->add_option("--idle-timeout", o.idle_timeout_s, "Give up after this long without a byte, wall s")
       ->capture_default_str();

@@ -2,12 +2,14 @@
 // (verilated board core, UART included) fed by `ncinterp send`, against `ncinterp play` on
 // the same tape: the same pulses and final position on the bundled examples (lines and
 // arcs); a flipped parity bit makes send fail naming the block, with no pulse from that
-// block; flow control engaged (RTS/CTS and XON/XOFF) with no frame lost, also on blocks too
-// short for the line to keep ahead.
+// block; flow control engaged (RTS/CTS, XON/XOFF, character counting) with no frame lost,
+// also on blocks too short for the line to keep ahead; the operator's keys, sent by send as
+// realtime bytes, hold, resume, override and stop the iCEBreaker.
 // The board runs at 1 MHz and 115200 baud (9 clocks per bit) instead of 12 MHz: the same
 // RTL and the same clock/baud relation, an eighth of the clocks to simulate (CI time).
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -110,7 +112,7 @@ TEST_F(BoardCli, GearLinesThroughThePtyMatchPlay) {
 TEST_F(BoardCli, CircleArcsThroughThePtyMatchPlay) {
   const std::string tape = kExamples + "/circle_r50.nc";
   const nlohmann::json p = play(tape);
-  ASSERT_EQ(send_to_board(tape, "--board icebreaker", "--flow rtscts"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(send_to_board(tape, "--board icebreaker", "--flow count"), 0) << send_err_ << board_err_;
   ASSERT_EQ(board_code_, 0) << board_err_;
   expect_same_motion(p);
   EXPECT_EQ(board_["frames_read"], p["frames"]);
@@ -138,12 +140,104 @@ TEST_F(BoardCli, ArcsOnTheLinesOnlyIcestickStopWithTheirOwnError) {
 TEST_F(BoardCli, XonXoffFlowControlLosesNoFrame) {
   const std::string tape = kExamples + "/gear.nc";
   const nlohmann::json p = play(tape);
-  ASSERT_EQ(send_to_board(tape, "--board icebreaker", "--flow xonxoff"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(send_to_board(tape, "--board icebreaker --flow xonxoff", "--flow xonxoff"), 0) << send_err_ << board_err_;
   ASSERT_EQ(board_code_, 0) << board_err_;
   expect_same_motion(p);
   EXPECT_EQ(board_["board"]["flow"], "xonxoff");
   EXPECT_GT(board_["board"]["xoff_sent"].get<uint64_t>(), 0u);
   EXPECT_EQ(board_["frames_read"], p["frames"]);
+}
+
+// Character counting, the iCEBreaker's flow control: its chip holds nothing back, send keeps
+// at most the board's FIFO (256 bytes) unacknowledged, and the board ACKs every 32 bytes it
+// takes. The gear's 48 blocks fill the FIFO and no frame is lost; a sender that does not
+// count (a plain write loop) overflows it, and the board stops with its own error.
+TEST_F(BoardCli, CharacterCountingFillsTheFifoAndLosesNoFrame) {
+  const std::string tape = kExamples + "/gear.nc";
+  const nlohmann::json p = play(tape);
+  ASSERT_EQ(send_to_board(tape, "--board icebreaker", "--flow count --no-keys"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  EXPECT_EQ(board_["board"]["flow"], "count");
+  EXPECT_EQ(board_["frames_read"], p["frames"]);
+  const unsigned taken = p["frames"].get<unsigned>() + 1;  // and the EOT frame
+  EXPECT_GE(board_["board"]["acks_sent"].get<unsigned>() + 1, taken / 32);
+  EXPECT_LE(board_["board"]["acks_sent"].get<unsigned>(), taken / 32);
+  EXPECT_GT(board_["board"]["max_fifo_level"].get<unsigned>(), 200u);
+  EXPECT_LE(board_["board"]["max_fifo_level"].get<unsigned>(), 256u);
+
+  EXPECT_EQ(send_to_board(tape, "--board icebreaker", "--flow rtscts"), 1);
+  EXPECT_EQ(board_["board"]["board_error"], 0x20) << board_err_;
+  EXPECT_NE(send_err_.find("FIFO overflowed"), std::string::npos) << send_err_;
+}
+
+// The operator's keys through send (--keys, here from a pipe). A hold typed at once holds
+// the machine near its start for good when no cycle start follows (board-sim ends at half
+// play's clocks, when the machine would be halfway without the hold). A hold and two feed override steps, with a cycle start half a second
+// later: the board takes each as one realtime command, the held machine waits for the start
+// (with its FIFO full, the pair of bytes still gets through), and the program ends where
+// play's ends, with the same pulses. An E-stop key stops the line: send and board-sim exit
+// 5, the board's error line names the stop.
+TEST_F(BoardCli, SendsKeysThatHoldResumeOverrideAndStopTheIcebreaker) {
+  const std::string tape = kExamples + "/gear.nc";
+  const nlohmann::json p = play(tape);
+  const auto send_with_keys = [&](const std::string& first, const std::string& later,
+                                  const std::string& board_args = "") {
+    const std::string keys = path("keys");
+    EXPECT_EQ(mkfifo(keys.c_str(), 0600), 0);
+    std::thread typist([&] {
+      std::ofstream k(keys);  // opens when send's shell opens the other end
+      k << first << std::flush;
+      std::this_thread::sleep_for(std::chrono::milliseconds(500));
+      k << later << std::flush;
+    });
+    start_board("--board icebreaker " + board_args);
+    const int code = run("send " + tape + " --port " + path("tty") + " --timeout 60 --flow count --keys < " + keys);
+    typist.join();
+    fs::remove(keys);
+    send_out_ = stdout_;
+    send_err_ = stderr_;
+    board_code_ = finish_board();
+    return code;
+  };
+  const uint64_t play_cycles = p["cycles"];
+  EXPECT_EQ(send_with_keys("h", "", "--max-cycles " + std::to_string(play_cycles / 2)), 4) << send_err_;
+  EXPECT_EQ(board_["board"]["realtime_commands"]["Hold"], 1);
+  EXPECT_NE(board_["status"], "ok");
+  const int64_t moved = board_["pulses"]["x"]["plus"].get<int64_t>() + board_["pulses"]["x"]["minus"].get<int64_t>();
+  EXPECT_LT(moved, p["pulses"]["x"]["plus"].get<int64_t>() / 10) << "the hold did not hold";
+
+  ASSERT_EQ(send_with_keys("h++", "s"), 0) << send_err_ << board_err_;
+  ASSERT_EQ(board_code_, 0) << board_err_;
+  expect_same_motion(p);
+  const nlohmann::json& taken = board_["board"]["realtime_commands"];
+  EXPECT_EQ(taken["Hold"], 1);
+  EXPECT_EQ(taken["FeedUp"], 2);
+  EXPECT_EQ(taken["Start"], 1) << "the program ended before the cycle start: the hold did not hold";
+  EXPECT_EQ(taken["EStop"], 0);
+  EXPECT_EQ(board_["board"]["board_error"], 0);
+
+  EXPECT_EQ(send_with_keys("", "x"), 5) << send_err_;
+  EXPECT_EQ(board_code_, 5) << board_err_;
+  EXPECT_EQ(board_["status"], "stopped");
+  EXPECT_EQ(board_["error"]["code"], 14);
+  EXPECT_NE(send_err_.find("emergency stop"), std::string::npos) << send_err_;
+}
+
+// A realtime byte without its twin (what a line error makes of a frame) is not a command
+// and not lost: the board stops with its own error. Keys need a board that counts.
+TEST_F(BoardCli, ALoneRealtimeByteStopsTheBoardWithItsOwnError) {
+  start_board("--board icebreaker");
+  const int port = open(path("tty").c_str(), O_RDWR | O_NOCTTY);
+  ASSERT_GE(port, 0);
+  const char bytes[] = {'h', '\xa5'};  // hold, then the tape's '%' (ISO 840 parity)
+  ASSERT_EQ(::write(port, bytes, sizeof bytes), 2);
+  close(port);
+  EXPECT_EQ(finish_board(), 1);
+  EXPECT_EQ(board_["board"]["board_error"], 0x23);
+  EXPECT_NE(board_err_.find("without its twin"), std::string::npos) << board_err_;
+  EXPECT_EQ(run("send " + kExamples + "/gear.nc --port " + path("tty") + " --keys"), 1);
+  EXPECT_NE(stderr_.find("--keys: realtime commands need --flow count"), std::string::npos) << stderr_;
 }
 
 // The iCEBreaker's core ramps at 500 mm/s^2 (its bitstream's AccelMmS2): a line of 2^15

@@ -50,16 +50,32 @@ const Code kCodes[] = {
 #undef TAPE_CODE
 };
 
-// The board's serial link (board_link.def).
+// The board's serial link (board_link.def). Each list expands one kind of its lines.
 #define BOARD_STATUS_DIGITS(block, field)
 #define BOARD_STATUS(name, letter, meaning)
 #define BOARD_ERROR(name, code, message)
+#define BOARD_LINK_COUNT(name, value, meaning)
+#define BOARD_REALTIME(name, byte, key, meaning)
 #define BOARD_LINK_BYTE(name, byte, meaning) {#name, byte, meaning},
 const Entry kLinkBytes[] = {
 #include "board_link.def"
 };
 #undef BOARD_LINK_BYTE
 #define BOARD_LINK_BYTE(name, byte, meaning)
+#undef BOARD_LINK_COUNT
+#define BOARD_LINK_COUNT(name, value, meaning) {#name, value, meaning},
+const Entry kLinkCounts[] = {
+#include "board_link.def"
+};
+#undef BOARD_LINK_COUNT
+#define BOARD_LINK_COUNT(name, value, meaning)
+#undef BOARD_REALTIME
+#define BOARD_REALTIME(name, byte, key, meaning) {#name, byte, std::string("key '") + key + "': " + meaning},
+const Entry kRealtime[] = {
+#include "board_link.def"
+};
+#undef BOARD_REALTIME
+#define BOARD_REALTIME(name, byte, key, meaning)
 #undef BOARD_ERROR
 #define BOARD_ERROR(name, code, message) {#name, code, message},
 const Entry kBoardErrors[] = {
@@ -88,6 +104,8 @@ constexpr unsigned kStatusDigits =
 #undef BOARD_STATUS
 #undef BOARD_ERROR
 #undef BOARD_LINK_BYTE
+#undef BOARD_LINK_COUNT
+#undef BOARD_REALTIME
 
 const Entry kErrors[] = {
 #define TAPE_ERROR(name, code, message) {#name, code, message},
@@ -314,11 +332,26 @@ std::string package(const std::string& tape_dir) {
          "  // codes (beside the tape errors above), the status lines' kind letters, the digits\n"
          "  // of their block field and of each of their two other fields.\n";
   items(out, kLinkBytes, "Link", 8, true, "logic [7:0]");
+  items(out, kLinkCounts, "Link", 32, false, "int");
+  items(out, kRealtime, "Realtime", 8, true, "logic [7:0]");
   items(out, kBoardErrors, "BoardErr", 8, true, "logic [7:0]");
   items(out, kStatusKinds, "Status", 8, true, "logic [7:0]");
   out << "  localparam int StatusBlockDigits = " << kStatusBlockDigits << ";\n"
          "  localparam int StatusDigits = " << kStatusDigits << ";\n"
-         "  /* verilator lint_on UNUSEDPARAM */\n"
+         "  /* verilator lint_on UNUSEDPARAM */\n";
+  const size_t commands = std::size(kRealtime);
+  out << "  // The realtime commands, one bit each in the list's order: the one a byte is (0: a\n"
+         "  // byte that is none). Literals, not the names above: see the code functions.\n"
+         "  localparam int RealtimeCommands = " << commands << ";\n"
+         "  function automatic logic [RealtimeCommands-1:0] realtime_command(input logic [7:0] b);\n"
+         "    case (b)\n";
+  for (size_t i = 0; i < commands; ++i)
+    out << "      " << literal(8, kRealtime[i].value, true) << ": realtime_command = " << commands << "'b"
+        << std::string(commands - 1 - i, '0') << "1" << std::string(i, '0') << ";  // " << kRealtime[i].name
+        << "\n";
+  out << "      default: realtime_command = '0;\n"
+         "    endcase\n"
+         "  endfunction\n"
          "\n"
          "endpackage\n";
   block_record_macro(out);

@@ -1,9 +1,11 @@
 // Lock step of the board RTL's modules against their golden twins, every clock:
 // uart_rx (rtl/board/uart_rx.sv) vs UartRxModel, uart_tx (rtl/board/uart_tx.sv) vs
 // UartTxModel, step_stretcher (rtl/board/step_stretcher.sv) vs StepStretcherModel,
-// operator_pins (rtl/board/operator_pins.sv) vs OperatorPinsModel, under random stimulus
-// (bytes, gaps, bit times, framing errors, glitches; step trains with direction changes
-// faster and slower than the driver timing; buttons pressed with bouncing contacts).
+// operator_pins (rtl/board/operator_pins.sv) vs OperatorPinsModel, host_link
+// (rtl/board/host_link.sv) vs HostLinkModel, under random stimulus (bytes, gaps, bit times,
+// framing errors, glitches; step trains with direction changes faster and slower than the
+// driver timing; buttons pressed with bouncing contacts and the host's commands; tape
+// bytes, realtime pairs and lone realtime bytes, a FIFO drained at random).
 // Besides agreeing, the twins must do their job: bytes arrive as sent, pulses keep their
 // width and set-up time, a bouncing press is one press.
 #include <gtest/gtest.h>
@@ -13,10 +15,12 @@
 #include <deque>
 #include <random>
 
+#include "Vhost_link.h"
 #include "Voperator_pins.h"
 #include "Vstep_stretcher.h"
 #include "Vuart_rx.h"
 #include "Vuart_tx.h"
+#include "host_link_model.h"
 #include "operator_pins_model.h"
 #include "step_stretcher_model.h"
 #include "uart_rx_model.h"
@@ -193,6 +197,7 @@ TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
   std::array<uint64_t, 2> presses{};
   std::array<uint64_t, kOperatorPins> settle_at{};
   uint64_t override_changes = 0;
+  std::array<uint64_t, kOperatorButtons> remote_presses{};
   uint16_t last_override = twin.feed_override();
   for (uint64_t c = 1; c < 200000; ++c) {
     for (int p = 0; p < kOperatorPins; ++p) {
@@ -215,8 +220,13 @@ TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
     rtl.limit_x_i = pins[kPinLimitX];
     rtl.limit_y_i = pins[kPinLimitY];
     rtl.optional_stop_i = pins[kPinOptionalStop];
+    // Now and then one clock of a host's command (HostLinkModel's pulses are a byte apart);
+    // not the E-stop, whose pin the test below follows.
+    const uint32_t remote = rng() % 500 == 0 ? 1u << (rng() % kOperatorButtons) : 0;
+    for (int b = 0; b < kOperatorButtons; ++b) remote_presses[b] += remote >> b & 1;
+    rtl.remote_i = remote;
     clock_edge(rtl);
-    twin.tick(pins);
+    twin.tick(pins, remote);
     ASSERT_EQ(rtl.hold_o, twin.hold()) << "clock " << c;
     ASSERT_EQ(rtl.start_o, twin.start()) << "clock " << c;
     ASSERT_EQ(rtl.feed_override_o, twin.feed_override()) << "clock " << c;
@@ -238,15 +248,95 @@ TEST(BoardLockstep, OperatorPinsMatchTheirTwinAndABouncingPressIsOnePress) {
     ASSERT_EQ(twin.limit_y(), before[kPinLimitY]) << "clock " << c;
     before = pins;
   }
-  // Every settled press is one press; the last one may still be in the debouncer. An
-  // override moves at most once per press of its buttons.
+  // Every settled press is one press, and so is every command of the host's; the last
+  // press may still be in the debouncer. An override moves at most once per press of its
+  // buttons.
+  // (A host's press in the same clock as a pin's is one press: rare, and allowed for.)
   for (int b = 0; b < 2; ++b) {
     EXPECT_GT(pressed[b], 50u);
-    EXPECT_LE(presses[b], pressed[b]) << "button " << b;
-    EXPECT_GE(presses[b] + 1, pressed[b]) << "button " << b;
+    EXPECT_GT(remote_presses[b], 10u);
+    EXPECT_LE(presses[b], pressed[b] + remote_presses[b]) << "button " << b;
+    EXPECT_GE(presses[b] + 2, pressed[b] + remote_presses[b]) << "button " << b;
   }
   EXPECT_GT(override_changes, 50u);
-  EXPECT_LE(override_changes, pressed[kPinFeedUp] + pressed[kPinFeedDown] + pressed[kPinFeedReset]);
+  EXPECT_LE(override_changes, pressed[kPinFeedUp] + pressed[kPinFeedDown] + pressed[kPinFeedReset] +
+                                  remote_presses[kPinFeedUp] + remote_presses[kPinFeedDown] +
+                                  remote_presses[kPinFeedReset]);
+}
+
+// host_link against its twin: a random byte stream of tape bytes (any byte that is no
+// realtime command), realtime pairs and now and then a lone realtime byte, bytes a few
+// clocks apart; a FIFO of the frames drained at random; each ACK sent a random while after
+// it is asked for. Besides agreeing: the frames come out in order and complete, every pair
+// is one command, every lone byte one error, and one ACK per LinkAckBytes bytes taken.
+TEST(BoardLockstep, HostLinkMatchesItsTwinAndCountsWhatItTakes) {
+  std::mt19937_64 rng(18);
+  Vhost_link rtl;
+  reset(rtl);
+  HostLinkModel twin;
+  std::deque<uint8_t> to_send, fifo;
+  std::vector<uint8_t> frames_sent, frames_got;
+  uint64_t pairs = 0, lones = 0, commands = 0, lone_errors = 0, taken = 0, acks = 0;
+  unsigned gap = 0, ack_wait = 0;
+  for (uint64_t c = 1; c < 400000; ++c) {
+    if (to_send.empty()) {
+      const unsigned r = static_cast<unsigned>(rng() % 100);
+      const uint8_t rt = kRealtimeCommands[rng() % kRealtimeCommandCount].byte;
+      if (r < 10) {
+        to_send = {rt, rt};
+        ++pairs;
+      } else if (r < 11) {
+        uint8_t next = static_cast<uint8_t>(rng());
+        while (realtime_command_bit(next) != 0) next = static_cast<uint8_t>(rng());
+        to_send = {rt, next};  // the byte after a lone one is lost with it
+        ++lones;
+      } else {
+        uint8_t b = static_cast<uint8_t>(rng());
+        while (realtime_command_bit(b) != 0) b = static_cast<uint8_t>(rng());
+        to_send = {b};
+        frames_sent.push_back(b);
+      }
+    }
+    const bool valid = gap == 0 && fifo.size() < kLinkFifoBytes;
+    const uint8_t rx = valid ? to_send.front() : static_cast<uint8_t>(rng());
+    gap = valid ? static_cast<unsigned>(2 + rng() % 8) : gap - (gap > 0);
+    const bool take = !fifo.empty() && rng() % 6 == 0;
+    const bool ack_sent = twin.ack() && ack_wait == 0;
+    ack_wait = ack_sent ? static_cast<unsigned>(rng() % 40) : ack_wait - (ack_wait > 0);
+    rtl.rx_data_i = rx;
+    rtl.rx_valid_i = valid;
+    rtl.taken_i = take;
+    rtl.ack_sent_i = ack_sent;
+    rtl.eval();
+    const bool frame = twin.frame(rx);
+    ASSERT_EQ(bool(rtl.frame_o), frame) << "clock " << c;  // combinational: before the edge
+    clock_edge(rtl);
+    twin.tick(rx, valid, take, ack_sent);
+    if (valid) {
+      to_send.pop_front();
+      if (frame) fifo.push_back(rx);
+    }
+    if (take) {
+      frames_got.push_back(fifo.front());
+      fifo.pop_front();
+      ++taken;
+    }
+    acks += ack_sent;
+    ASSERT_EQ(rtl.command_o, twin.command()) << "clock " << c;
+    ASSERT_EQ(bool(rtl.lone_o), twin.lone()) << "clock " << c;
+    ASSERT_EQ(bool(rtl.ack_o), twin.ack()) << "clock " << c;
+    commands += twin.command() != 0;
+    lone_errors += twin.lone();
+  }
+  EXPECT_GT(pairs, 1000u);
+  EXPECT_GT(lones, 100u);
+  EXPECT_EQ(commands + 1 >= pairs && commands <= pairs, true) << commands << " of " << pairs;
+  EXPECT_EQ(lone_errors + 1 >= lones && lone_errors <= lones, true) << lone_errors << " of " << lones;
+  frames_sent.resize(frames_got.size());
+  EXPECT_EQ(frames_got, frames_sent);
+  EXPECT_GT(taken, 10000u);
+  EXPECT_LE(acks, taken / kLinkAckBytes);
+  EXPECT_GE(acks + 1, taken / kLinkAckBytes);
 }
 
 }  // namespace

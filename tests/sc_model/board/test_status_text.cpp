@@ -32,7 +32,7 @@ TEST(StatusText, ParsesBlockDoneAndErrorLines) {
   EXPECT_EQ(e->block, 3u);
   EXPECT_EQ(e->offset, 57u);
   EXPECT_EQ(e->code, 1);
-  EXPECT_NE(board_error_message(0x10).find("overflowed"), std::string::npos);
+  EXPECT_NE(board_error_message(0x20).find("overflowed"), std::string::npos);
 }
 
 TEST(StatusText, RejectsOtherText) {
