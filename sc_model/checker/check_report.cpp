@@ -225,7 +225,7 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
   s << ", " << fs.saturated << " saturated block(s)\n";
   if (ctx.setup.accel_mm_s2 > 0) {
     const AccelSummary a = accel_summary(c, ctx.setup, o.blu_mm);
-    s << "  acceleration (straight blocks): max X " << fmt("%.1f", a.max_mm_s2[0]) << ", Y "
+    s << "  acceleration of the ramp: max X " << fmt("%.1f", a.max_mm_s2[0]) << ", Y "
       << fmt("%.1f", a.max_mm_s2[1]) << " mm/s^2, limit " << fmt("%g", a.limit_mm_s2)
       << " mm/s^2; worst " << fmt("%.2f", a.worst_ratio) << " of limit + allowance\n";
   }

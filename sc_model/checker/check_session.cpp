@@ -102,6 +102,7 @@ CheckOutcome run_check(const std::vector<uint8_t>& frames, const firststage::Con
   CheckerOptions co;
   co.feed_modulus = cfg.feed_modulus;
   co.schedule = setup.schedule;
+  co.inc_width = cfg.inc_width;
   co.lead_bits = SerialDda::player_lead_bits(cfg);
   co.rapid_step = cfg.rapid_step_on_port();
   co.accel_step = cfg.accel_step;

@@ -1,6 +1,7 @@
 // Pulse-path monitor (see trajectory_checker.h).
 #include "trajectory_checker.h"
 
+#include "arc_geometry.h"
 #include "path_bounds.h"
 
 #include <algorithm>
@@ -22,7 +23,7 @@ constexpr double kBoundSlack = 1e-9;
 
 // The schedule and duration rules hold for straight blocks: the documented L1 timing, a G01
 // block's at its F, a G00 block's at the machine's rapid step (CheckerOptions::rapid_step).
-// An arc's geometry only is checked (direction, count, bound, endpoint).
+// An arc's geometry (direction, count, bound, endpoint) and its pulses' order are checked.
 bool timed(const ProgrammedBlock& b) { return !b.is_arc(); }
 
 }  // namespace
@@ -191,6 +192,7 @@ void TrajectoryChecker::observe(uint64_t cycle, const InterpOutputs& o) {
       report(Rule::kTool, cycle,
              std::string("tool_o = ") + (o.tool ? "1" : "0") + " at a pulse of a block the tape has the tool " +
                  (results_[cur_].tool ? "on (after M03)" : "off"));
+    if (options_.schedule && b.is_arc() && pulsed) check_arc_order(cycle, step);
     if (options_.schedule && timed(b)) {
       if (!ramped())
         check_schedule(cycle, pulsed);
@@ -280,10 +282,18 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o, bool
   expected_dir_[1] = b.is_arc() ? b.tape.dy > 0 : b.tape.dy >= 0;
   iterations_ = 0;
   events_ = 0;
-  if (timed(b))
+  if (timed(b)) {
     schedule_ = schedule_of(b);
-  else
+    block_iterations_ = schedule_.iterations();
+  } else {
     r.saturated = o.feed_saturated;  // an arc's S = F N needs the dry run's N: the engine's word
+    const ArcGeometry g = arc_geometry(
+        ArcWords::from_signed(b.tape.dx, b.tape.dy, b.tape.i, b.tape.j, b.tape.motion == tape::Motion::kArcCcw),
+        options_.inc_width);
+    arc_dda_.load(g, false, false);
+    CircleDda dry = arc_dda_;
+    for (block_iterations_ = 0; !dry.done(); ++block_iterations_) dry.iterate();
+  }
   if (o.block_n != b.tape.n)
     report(Rule::kSequence, cycle,
            "block_n_o = " + std::to_string(o.block_n) + " at the load of tape block " +
@@ -412,6 +422,26 @@ void TrajectoryChecker::check_order(uint64_t cycle) {
   if (options_.accel_step > 0) check_acceleration(cycle);
 }
 
+void TrajectoryChecker::check_arc_order(uint64_t cycle, const bool step[2]) {
+  // The circle DDA's next iteration that pulses; its steps must be this clock's.
+  CircleDda::Steps s;
+  while (!arc_dda_.done() && !s.x && !s.y) {
+    s = arc_dda_.iterate();
+    ++iterations_;
+  }
+  if (!s.x && !s.y) {
+    report(Rule::kSchedule, cycle, "a pulse after the arc's last pulsing iteration");
+    return;
+  }
+  if (s.x != step[0] || s.y != step[1]) {
+    const auto axes = [](bool x, bool y) { return std::string(x ? "X" : "") + (y ? "Y" : ""); };
+    report(Rule::kSchedule, cycle,
+           "pulses on " + axes(step[0], step[1]) + ", the circle DDA's iteration " + std::to_string(iterations_) +
+               " of " + std::to_string(block_iterations_) + " pulses " + axes(s.x, s.y));
+  }
+  if (options_.accel_step > 0) check_acceleration(cycle);
+}
+
 void TrajectoryChecker::check_acceleration(uint64_t cycle) {
   // Iteration rate over spans between pulsing iterations: r = dj / dt; its change over the
   // time between the middles of two spans is the path's acceleration in iterations per
@@ -433,9 +463,10 @@ void TrajectoryChecker::check_acceleration(uint64_t cycle) {
     const double allowance = ((j1 - j0) / (dt1 * dt1) + (j2 - j1) / (dt2 * dt2)) / mid;
     const ProgrammedBlock& b = blocks_[cur_];
     BlockResult& r = results_[cur_];
-    const double kpow = static_cast<double>(schedule_.iterations());
-    const double share[2] = {static_cast<double>(std::llabs(b.tape.dx)) / kpow,
-                             static_cast<double>(std::llabs(b.tape.dy)) / kpow};
+    // An axis's share of an iteration: |d| / N (on average, for an arc).
+    const double n = static_cast<double>(block_iterations_);
+    const double share[2] = {static_cast<double>(std::llabs(b.tape.dx)) / n,
+                             static_cast<double>(std::llabs(b.tape.dy)) / n};
     for (int a = 0; a < 2; ++a) r.accel[a] = std::max(r.accel[a], rate_accel * share[a]);
     r.accel_ratio = std::max(r.accel_ratio, rate_accel / (limit + allowance));
     if (rate_accel > limit + allowance)

@@ -14,6 +14,9 @@
 //             or late pulse is reported at the clock where it happens; with the feed ramp
 //             (CheckerOptions::accel_step) the counts at each pulse are those of the
 //             DDA's next pulsing iteration: the pulses without ramps, in their order;
+//             (arcs) the pulses at each clock are those of the circle DDA's next pulsing
+//             iteration (dda_circle.h, replayed from the block's words): its order, at any
+//             times (the arcs' timing is the engines' and the cosim's);
 //   bound     each pulse position is within the interpolator's bound of the block's path;
 //   endpoint  at the block's end each axis has emitted exactly its increment;
 //   duration  (G01 blocks) the block lasts the documented ceil(M/F) (2^k + 1 saturated),
@@ -22,10 +25,12 @@
 //   held      no pulse while the operator holds (--events), once the machine can be at
 //             rest: from the hold's press plus CheckerOptions::hold_settle clocks (the
 //             ramp down from the fastest rate and a serial iteration in flight) to start;
-//   accel     (straight blocks, with the ramp) no axis's acceleration exceeds the limit
-//             du / M BLU per clock^2 (times |d| / 2^k for the axis of d), measured from
-//             the times of the iterations that pulse, plus the allowance of one clock
-//             per iteration time (a strobe comes on the clock after the phase passes M);
+//   accel     (with the ramp) the iteration rate changes by at most du / M per clock^2
+//             (an axis's acceleration: that times |d| / N, N the block's iterations, on
+//             average over an arc), measured from the times of the iterations that pulse,
+//             plus the allowance of one clock per iteration time (a strobe comes on the
+//             clock after the phase passes M); an arc's own centripetal acceleration is
+//             its feed's (the first stage's);
 //   stop      after an E-stop or a limit (--events; CheckerOptions::stop_cycle) no pulse
 //             comes after the clock of its press, and the machine shows the error with
 //             the input's code from that clock, naming the block playing;
@@ -123,7 +128,8 @@ struct PulseSample {
 
 struct CheckerOptions {
   uint64_t feed_modulus = 60ull * 1000000ull * 1000ull;  // M = 60 f_clk 10^FeedFracDigits
-  bool schedule = true;        // the schedule and duration rules for line blocks
+  bool schedule = true;        // the schedule and duration rules for line blocks (arcs: order)
+  unsigned inc_width = 16;     // W (InterpConfig::inc_width): an arc's circle DDA at it
   unsigned lead_bits = 0;      // log2 of the DDA's clocks per iteration (line_schedule.h)
   uint64_t rapid_step = 0;     // S of a G00 block (InterpConfig::rapid_step_on_port())
   // The feed ramp's step du (InterpConfig::accel_step; 0: no ramps). Ramped, a line's
@@ -211,6 +217,7 @@ class TrajectoryChecker {
   void on_pulse(uint64_t cycle, const bool step[2], const bool dir[2]);
   void check_schedule(uint64_t cycle, bool pulsed);
   void check_order(uint64_t cycle);           // the schedule rule with the ramp
+  void check_arc_order(uint64_t cycle, const bool step[2]);  // the schedule rule on an arc
   void check_acceleration(uint64_t cycle);    // at an iteration that pulses, with the ramp
   // The ramp or the operator's holds move the iterations off the documented clocks: the
   // schedule rule checks their order, the duration rule a lower bound.
@@ -250,6 +257,8 @@ class TrajectoryChecker {
   unsigned __int128 step_of(const ProgrammedBlock& b) const;
   LineSchedule schedule_of(const ProgrammedBlock& b) const;
   uint64_t iterations_ = 0;      // documented iterations due by the last clock
+  uint64_t block_iterations_ = 0;  // the block's N: 2^k, or an arc's (a dry run)
+  CircleDda arc_dda_;            // an arc's DDA, replayed an iteration ahead of its pulses
   // With the ramp: the last two pulsing iterations of the block (index, cycle).
   uint64_t event_j_[2] = {0, 0}, event_t_[2] = {0, 0};
   int events_ = 0;
