@@ -191,7 +191,7 @@ module status_line #(
       if (char_start) begin
         sending_q <= 1'b1;
         flow_q    <= flow_byte;
-        ack_q     <= !flow_change;
+        ack_q     <= ack_sent_o;
         if (flow_change) told_xoff_q <= xoff_i;
         bit_q     <= '0;
         count_q   <= bit_cycles_i - 1'b1;

@@ -103,21 +103,10 @@ BoardStatus StatusTracker::resolve(const StatusLine& line, uint64_t frames_sent)
 
 std::string board_error_message(uint8_t code) {
   switch (code) {
-#define BOARD_LINK_BYTE(name, byte, meaning)
-#define BOARD_LINK_COUNT(name, value, meaning)
-#define BOARD_REALTIME(name, byte, key, meaning)
 #define BOARD_ERROR(name, code, message) \
   case code:                             \
     return message;
-#define BOARD_STATUS(name, letter, meaning)
-#define BOARD_STATUS_DIGITS(block, field)
 #include "board_link.def"
-#undef BOARD_LINK_BYTE
-#undef BOARD_LINK_COUNT
-#undef BOARD_REALTIME
-#undef BOARD_ERROR
-#undef BOARD_STATUS
-#undef BOARD_STATUS_DIGITS
   }
   return tape_error_message(static_cast<TapeError>(code));
 }

@@ -25,15 +25,11 @@ namespace ncinterp::board {
 
 #define BOARD_LINK_BYTE(name, byte, meaning) inline constexpr uint8_t kLink##name = byte;
 #define BOARD_LINK_COUNT(name, value, meaning) inline constexpr unsigned kLink##name = value;
-#define BOARD_REALTIME(name, byte, key, meaning)
-#define BOARD_ERROR(name, code, message)
 #define BOARD_STATUS(name, letter, meaning) inline constexpr char kStatus##name = letter;
 #define BOARD_STATUS_DIGITS(block, field)                          \
   inline constexpr unsigned kStatusBlockDigits = block;            \
   inline constexpr unsigned kStatusDigits = field;
 #include "board_link.def"
-#undef BOARD_REALTIME
-#undef BOARD_STATUS_DIGITS
 
 // The realtime commands in the list's order (the bit of interp_pkg::realtime_command()
 // and of operator_pins' remote_i).
@@ -45,56 +41,21 @@ struct RealtimeCommand {
 };
 inline constexpr RealtimeCommand kRealtimeCommands[] = {
 #define BOARD_REALTIME(name, byte, key, meaning) {#name, byte, key, meaning},
-#define BOARD_STATUS_DIGITS(block, field)
-#undef BOARD_LINK_BYTE
-#define BOARD_LINK_BYTE(name, byte, meaning)
-#undef BOARD_LINK_COUNT
-#define BOARD_LINK_COUNT(name, value, meaning)
-#undef BOARD_STATUS
-#define BOARD_STATUS(name, letter, meaning)
 #include "board_link.def"
 };
-#undef BOARD_LINK_BYTE
-#undef BOARD_LINK_COUNT
-#undef BOARD_REALTIME
-#undef BOARD_ERROR
-#undef BOARD_STATUS
-#undef BOARD_STATUS_DIGITS
 inline constexpr int kRealtimeCommandCount = static_cast<int>(std::size(kRealtimeCommands));
 
 // Board-level error codes (above the interpolator's TapeError codes).
 enum class BoardError : uint8_t {
-#define BOARD_LINK_BYTE(name, byte, meaning)
-#define BOARD_LINK_COUNT(name, value, meaning)
-#define BOARD_REALTIME(name, byte, key, meaning)
 #define BOARD_ERROR(name, code, message) k##name = code,
-#define BOARD_STATUS(name, letter, meaning)
-#define BOARD_STATUS_DIGITS(block, field)
 #include "board_link.def"
-#undef BOARD_LINK_BYTE
-#undef BOARD_LINK_COUNT
-#undef BOARD_REALTIME
-#undef BOARD_ERROR
-#undef BOARD_STATUS
-#undef BOARD_STATUS_DIGITS
 };
 
 // A board error's code is none of the interpolator's: both go out in the E line's code.
 constexpr bool board_errors_above_tape_errors() {
-#define BOARD_LINK_BYTE(name, byte, meaning)
-#define BOARD_LINK_COUNT(name, value, meaning)
-#define BOARD_REALTIME(name, byte, key, meaning)
 #define BOARD_ERROR(name, code, message) \
   if ((code) < (1u << kTapeErrorBits) || (code) > 0xff) return false;
-#define BOARD_STATUS(name, letter, meaning)
-#define BOARD_STATUS_DIGITS(block, field)
 #include "board_link.def"
-#undef BOARD_LINK_BYTE
-#undef BOARD_LINK_COUNT
-#undef BOARD_REALTIME
-#undef BOARD_ERROR
-#undef BOARD_STATUS
-#undef BOARD_STATUS_DIGITS
   return true;
 }
 static_assert(board_errors_above_tape_errors(), "board_link.def: a board error code collides with a tape error's");

@@ -26,21 +26,20 @@
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <iostream>
 #include <deque>
+#include <iostream>
 #include <map>
 #include <optional>
 #include <stdexcept>
 
-#include <csignal>
-
+#include "board_sim.h"
 #include "command_registry.h"
+#include "feed_override.h"
 #include "machine_options.h"
 #include "play_run.h"
-#include "board_sim.h"
-#include "feed_override.h"
 #include "status_text.h"
 #include "tape.h"
 

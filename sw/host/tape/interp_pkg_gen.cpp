@@ -51,61 +51,34 @@ const Code kCodes[] = {
 };
 
 // The board's serial link (board_link.def). Each list expands one kind of its lines.
-#define BOARD_STATUS_DIGITS(block, field)
-#define BOARD_STATUS(name, letter, meaning)
-#define BOARD_ERROR(name, code, message)
-#define BOARD_LINK_COUNT(name, value, meaning)
-#define BOARD_REALTIME(name, byte, key, meaning)
 #define BOARD_LINK_BYTE(name, byte, meaning) {#name, byte, meaning},
 const Entry kLinkBytes[] = {
 #include "board_link.def"
 };
-#undef BOARD_LINK_BYTE
-#define BOARD_LINK_BYTE(name, byte, meaning)
-#undef BOARD_LINK_COUNT
 #define BOARD_LINK_COUNT(name, value, meaning) {#name, value, meaning},
 const Entry kLinkCounts[] = {
 #include "board_link.def"
 };
-#undef BOARD_LINK_COUNT
-#define BOARD_LINK_COUNT(name, value, meaning)
-#undef BOARD_REALTIME
 #define BOARD_REALTIME(name, byte, key, meaning) {#name, byte, std::string("key '") + key + "': " + meaning},
 const Entry kRealtime[] = {
 #include "board_link.def"
 };
-#undef BOARD_REALTIME
-#define BOARD_REALTIME(name, byte, key, meaning)
-#undef BOARD_ERROR
 #define BOARD_ERROR(name, code, message) {#name, code, message},
 const Entry kBoardErrors[] = {
 #include "board_link.def"
 };
-#undef BOARD_ERROR
-#define BOARD_ERROR(name, code, message)
-#undef BOARD_STATUS
 #define BOARD_STATUS(name, letter, meaning) {#name, static_cast<unsigned>(letter), meaning},
 const Entry kStatusKinds[] = {
 #include "board_link.def"
 };
-#undef BOARD_STATUS
-#define BOARD_STATUS(name, letter, meaning)
-#undef BOARD_STATUS_DIGITS
 #define BOARD_STATUS_DIGITS(block, field) block +
 constexpr unsigned kStatusBlockDigits =
 #include "board_link.def"
     0;
-#undef BOARD_STATUS_DIGITS
 #define BOARD_STATUS_DIGITS(block, field) field +
 constexpr unsigned kStatusDigits =
 #include "board_link.def"
     0;
-#undef BOARD_STATUS_DIGITS
-#undef BOARD_STATUS
-#undef BOARD_ERROR
-#undef BOARD_LINK_BYTE
-#undef BOARD_LINK_COUNT
-#undef BOARD_REALTIME
 
 const Entry kErrors[] = {
 #define TAPE_ERROR(name, code, message) {#name, code, message},

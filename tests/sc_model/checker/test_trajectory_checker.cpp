@@ -98,6 +98,20 @@ TEST(TrajectoryChecker, CleanRandomLineProgramsPassEveryRuleOnTheSerialPlayer) {
   clean_random_line_programs_pass_every_rule(Arch::kSerial);
 }
 
+// The violations of program p played on setup's machine ramped 8 times steeper than the
+// checker expects (the engine at 8 du, the checker told du).
+std::vector<Violation> steeper_ramp_violations(const tape::Program& p, const CheckSetup& setup) {
+  InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
+  cfg.arch = setup.arch;
+  const CheckerOptions co = options_for(cfg);
+  cfg.accel_step *= 8;
+  const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
+  TrajectoryChecker c(lay_out(p), nullptr, co);
+  for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
+  c.finish(trace.back());
+  return c.violations();
+}
+
 // With the feed ramp (--accel) the same programs pass every rule, the schedule rule now
 // the DDA's order of pulses, the duration rule at least the programmed time, and the
 // acceleration rule; a run ramped 8 times steeper than the checker's limit fails the
@@ -112,19 +126,10 @@ TEST(TrajectoryChecker, RampedRunsPassEveryRuleAndASteeperRampFailsTheAccelerati
       const CheckOutcome out = run_check(frames_of(p), nullptr, setup);
       ASSERT_TRUE(out.passed()) << arch_name(arch) << " program " << prog << ": " << first_violation(*out.checker);
     }
-    // The engine ramps at 8 du, the checker expects du.
-    const tape::Program p = test::random_line_program(rng, 6, 12, modulus, 30000, 60000);
-    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
-    cfg.arch = arch;
-    CheckerOptions co = options_for(cfg);
-    cfg.accel_step *= 8;
-    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), cfg, 1);
-    TrajectoryChecker c(lay_out(p), nullptr, co);
-    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
-    c.finish(trace.back());
-    ASSERT_GT(c.violation_count(), 0u) << arch_name(arch);
-    for (const Violation& v : c.violations())
-      EXPECT_EQ(v.rule, Rule::kAcceleration) << arch_name(arch) << ": " << v.detail;
+    const std::vector<Violation> steep =
+        steeper_ramp_violations(test::random_line_program(rng, 6, 12, modulus, 30000, 60000), setup);
+    ASSERT_FALSE(steep.empty()) << arch_name(arch);
+    for (const Violation& v : steep) EXPECT_EQ(v.rule, Rule::kAcceleration) << arch_name(arch) << ": " << v.detail;
   }
 }
 
@@ -165,21 +170,13 @@ TEST(TrajectoryChecker, ArcsKeepTheCircleDdasOrderAndTheAccelerationLimit) {
       EXPECT_LE(r.accel_ratio, 1.0);
     }
 
-    InterpConfig cfg = interp_config(setup.clock_hz, setup.format, setup.rapid_mm_min, setup.accel_mm_s2);
-    cfg.arch = arch;
-    const CheckerOptions co = options_for(cfg);
-    InterpConfig steep = cfg;
-    steep.accel_step *= 8;
-    const std::vector<InterpOutputs> trace = test::golden_trace(frames_of(p), steep, 1);
-    TrajectoryChecker c(lay_out(p), nullptr, co);
-    for (size_t t = 0; t < trace.size(); ++t) c.observe(t, trace[t]);
-    c.finish(trace.back());
-    ASSERT_GT(c.violation_count(), 0u) << arch_name(arch);
-    for (const Violation& v : c.violations())
-      EXPECT_EQ(v.rule, Rule::kAcceleration) << arch_name(arch) << ": " << v.detail;
+    const std::vector<Violation> steep = steeper_ramp_violations(p, setup);
+    ASSERT_FALSE(steep.empty()) << arch_name(arch);
+    for (const Violation& v : steep) EXPECT_EQ(v.rule, Rule::kAcceleration) << arch_name(arch) << ": " << v.detail;
 
     // Unramped, the first arc's first X-only pulse and the Y-only pulse after it swap clocks.
-    cfg.accel_step = 0;
+    InterpConfig cfg = interp_config(setup.clock_hz, setup.format);
+    cfg.arch = arch;
     std::vector<InterpOutputs> swapped = test::golden_trace(frames_of(p), cfg, 1);
     size_t x_only = 0, y_only = 0;
     for (size_t t = 0; t < swapped.size() && !y_only; ++t) {
