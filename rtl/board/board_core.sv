@@ -14,9 +14,9 @@
 // bytes taken out of the FIFO, so the host can count characters instead.
 // Board errors join the interpolator's (error LED and an "E" status line): the FIFO
 // overflowed (flow control failed), a UART framing error, a step pulse was lost (steps
-// faster than the driver timing allows), a realtime byte came alone, codes interp_pkg::BoardErr* (the link's list,
-// sw/host/tape/board_link.def); their block is the current block_n and their offset the
-// number of bytes the FIFO took before the error.
+// faster than the driver timing allows), a realtime byte came alone; codes
+// interp_pkg::BoardErr* (the link's list, sw/host/tape/board_link.def). Their block is the
+// current block_n and their offset the number of bytes the FIFO took before the error.
 // The interpolator is built as the board's configuration asks (arch, circle mode), with
 // 20-bit positions, N and frame offsets; the status line sends their low bits (N's low
 // 4 * StatusBlockDigits, the others' low 4 * StatusDigits), which the host resolves
@@ -29,7 +29,8 @@
 // stretchers' clock counts.
 // Timing: every output is a register or a function of registers.
 // Golden twins: GoldenInterp for interp_top (board-sim compares nothing itself: it replays
-// the outputs into the play monitors), the UART and stretcher models of sc_model/board/.
+// the outputs into the play monitors), the UART, stretcher, operator pins and host link
+// models of sc_model/board/.
 module board_core #(
   parameter int FifoAddrWidth = $clog2(interp_pkg::LinkFifoBytes),
   parameter int CtsStopLevel  = 240,

@@ -18,7 +18,8 @@
 // with the final position; blocks shorter than a line time are not seen (the host names
 // the block ends it sees). The error line and the done line are sent once each, the error
 // line first; a line that starts takes the place of any pending B line (each carries N and
-// the position, the E line N). No character of a line is XON, XOFF, ACK, CR or LF but its end.
+// the position, the E line N). No character of a line is XON, XOFF, ACK, CR or LF but its
+// end.
 // Flow control has priority: when xoff_i changes, XOFF or XON goes out before the next
 // character of a line, and then, while ack_i asks, an ACK (character counting, host_link.sv;
 // ack_sent_o at its first clock).
