@@ -10,9 +10,10 @@
 //   N clocks, or at most 2W 2^(W+1) + W with BitSerial (2P N), and the bit-serial radius check,
 //   docs/interpolator.md 3.5) and the clocks around it. So a byte stream ends in a played program, a held block, waiting for
 //   frames, or an error, and nothing else stalls the reader;
-// - ap_line_ready_bounded: while the modal motion is G01 (so no arc is prepared), the bound
-//   is K_line = W + 4: a line's addition of F, its k doublings and the clocks around them;
-//   with BitSerial at least NumWidth + 1, a digit's x10 + d pass and the clock after it.
+// - ap_line_ready_bounded: while the block's motion is no arc (so no arc is prepared: a
+//   line, a G00, or a still block, which shows as a G00), the bound is K_line = W + 4: a
+//   line's addition of F, its k doublings and the clocks around them; with BitSerial at
+//   least NumWidth + 1, a digit's x10 + d pass and the clock after it.
 // Environment: reset in the first clock, tape_end_i stays high once high and no frame
 // comes after it. Why BMC: k-induction would need invariants of the parser's and the arc
 // preparation's internals, which change whenever their area is worked on. The CI depth (16 clocks)
@@ -69,8 +70,8 @@ module tape_decoder_props #(
     .err_code_o(err_code), .err_block_o(err_block), .err_offset_o(err_offset)
   );
 
-  // Model: clocks frame_ready has been low (saturating), the same while the modal motion
-  // is G01, the tape end seen.
+  // Model: clocks frame_ready has been low (saturating), the same while the block's motion
+  // is no arc, the tape end seen.
   logic                f_init = 1'b1;
   logic                f_tape_end_q;
   logic [LowWidth-1:0] f_low_q, f_low_line_q;
@@ -80,7 +81,7 @@ module tape_decoder_props #(
     f_tape_end_q <= tape_end_i && rst_ni;
     if (!rst_ni || frame_ready || err || blk_valid) f_low_q <= '0;
     else if (f_low_q != '1) f_low_q <= f_low_q + 1'b1;
-    if (!rst_ni || frame_ready || err || blk_valid || block.motion != interp_pkg::MotionLine)
+    if (!rst_ni || frame_ready || err || blk_valid || interp_pkg::motion_is_arc(block.motion))
       f_low_line_q <= '0;
     else if (f_low_line_q != '1) f_low_line_q <= f_low_line_q + 1'b1;
   end
