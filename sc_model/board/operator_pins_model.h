@@ -2,8 +2,7 @@
 // inputs.
 // Idea: the RTL's two synchronizer stages, its shared prescaler, the buttons' last sample,
 // debounced level and press (a pin's or the host's), and the override counts, with the
-// same update rules, compared
-// every clock by tests/sc_model/board/test_board_lockstep.cpp.
+// same update rules, compared every clock by tests/sc_model/board/test_board_lockstep.cpp.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -26,7 +25,9 @@ class OperatorPinsModel {
 
   bool hold() const { return press_[kPinHold]; }
   bool start() const { return press_[kPinStart]; }
-  uint16_t feed_override() const { return feed_override_; }
+  // The RTL registers override_of_tens() of the count: the same value, one clock later
+  // than its button's press, as the count.
+  uint16_t feed_override() const { return override_units(10.0 * tens_); }
   uint16_t rapid_override() const { return static_cast<uint16_t>(kOverrideOne >> rapid_); }
   bool estop() const { return sync_[kPinEStop] || remote_estop_; }
   bool limit_x() const { return sync_[kPinLimitX]; }
@@ -46,7 +47,6 @@ class OperatorPinsModel {
     else if (press[kPinFeedUp] && tens_ != kOverrideTens) ++tens_;
     else if (press[kPinFeedDown] && tens_ != 0) --tens_;
     if (press[kPinRapid]) rapid_ = rapid_ == 2 ? 0 : rapid_ + 1;
-    feed_override_ = override_units(10.0 * tens_);
     press_ = press;
     if (tick) {
       for (int b = 0; b < kOperatorButtons; ++b) {
@@ -64,7 +64,6 @@ class OperatorPinsModel {
   std::array<bool, kOperatorButtons> sample_{}, down_{}, press_{};
   bool remote_estop_ = false;
   unsigned tens_ = kOverrideTensAtOne, rapid_ = 0;
-  uint16_t feed_override_ = kOverrideOne;
 };
 
 }  // namespace ncinterp::board

@@ -107,12 +107,7 @@ uint64_t block_iterations(const tape::Block& b, const InterpConfig& cfg) {
       arc_geometry(ArcWords::from_signed(b.dx, b.dy, b.i, b.j, b.motion == tape::Motion::kArcCcw), cfg.inc_width);
   CircleDda dda;
   dda.load(g, false, false);
-  uint64_t n = 0;
-  while (!dda.done()) {
-    dda.iterate();
-    ++n;
-  }
-  return n;
+  return dda.iterations_left();
 }
 
 FeedPlan plan_feed(const tape::Program& program, const InterpConfig& config, double clock_hz,

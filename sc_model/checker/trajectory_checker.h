@@ -257,7 +257,7 @@ class TrajectoryChecker {
   unsigned __int128 step_of(const ProgrammedBlock& b) const;
   LineSchedule schedule_of(const ProgrammedBlock& b) const;
   uint64_t iterations_ = 0;      // documented iterations due by the last clock
-  uint64_t block_iterations_ = 0;  // the block's N: 2^k, or an arc's (a dry run)
+  uint64_t block_iterations_ = 0;  // the block's N: 2^k, or an arc's (a dry run, with the ramp)
   CircleDda arc_dda_;            // an arc's DDA, replayed an iteration ahead of its pulses
   // With the ramp: the last two pulsing iterations of the block (index, cycle).
   uint64_t event_j_[2] = {0, 0}, event_t_[2] = {0, 0};

@@ -92,6 +92,13 @@ class CircleDda {
   // their pulses.
   bool done() const { return line_ ? rem_ == 0 : cnt_[0] == 0 && cnt_[1] == 0; }
   bool dir(int axis) const { return dir_[axis]; }
+  // The iterations until done(), by a dry run on a copy (an arc's N: no closed form).
+  uint64_t iterations_left() const {
+    CircleDda dry = *this;
+    uint64_t n = 0;
+    for (; !dry.done(); ++n) dry.iterate();
+    return n;
+  }
 
   // Register access for tests, the bench and the golden model's fault hook.
   uint64_t kpow() const { return kpow_; }
