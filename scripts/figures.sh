@@ -8,7 +8,8 @@
 #   figures:sim), check (figures:check), motion (docs/motion-control.md: figures:motion),
 #   firststage (figures:firststage), gaps
 #   (figures:gaps-*); default all (without gaps with --quick). tests (docs/verification.md:
-#   figures:test-times) runs the whole test suite label by label and only when named.
+#   figures:test-times) runs the whole test suite label by label and only when named;
+#   lockstep (docs/motion-control.md: figures:lockstep) too.
 #   --quick     one placement seed instead of five, shorter benchmark runs (minutes, not a
 #               quarter of an hour); the tables say which
 #   --no-write  print the tables, leave docs/ alone
@@ -89,6 +90,21 @@ motion_machine="--clock-hz 12e6 --reader-cps 11520 --arch serial"
 # (check, from the first block's load), continuous mode planned per look-ahead.
 plan_machine="--accel 500 --junction-deviation 0.01"
 
+# Every bundled example with the feed ramp, in lock step (section lockstep, only when named:
+# about ten minutes): "input | ncinterp tape arguments" (- for a tape), a glob expanded.
+# Each tape plays in `cosim` on both archs without the ramp and at lockstep_accel, and
+# `check --accel` holds it to the acceleration rule on both archs.
+lockstep_inputs=(
+  "examples/gear.nc | -"
+  "examples/circle_r50.nc | -"
+  "examples/contours/*.json | --tol 0.01 --method 3"
+  "examples/contours/*.dat | --tol 0.01 --method 3"
+  "examples/contours/part.nc | --tol 0.01 --method 3 --arcs circle"
+  "examples/contours/cam/*.* | --tol 0.01 --arcs circle --tool"
+)
+lockstep_accel=500
+lockstep_machine="--reader-cps 100000"
+
 # Gap clocks (the player idle between blocks) against the reader and the feed, one table
 # per line: "name | script and its options | reader speeds or feeds | tapes or contour and
 # clocks". Tapes: examples/*.nc, bench/sim/small_arcs.nc, and two written by the first
@@ -125,7 +141,7 @@ while (($#)); do
     --quick) quick=1 ;;
     --no-write) write=0 ;;
     --build) build=$2; shift ;;
-    area | sim | check | motion | firststage | gaps | tests) sections+=("$1") ;;
+    area | sim | check | motion | lockstep | firststage | gaps | tests) sections+=("$1") ;;
     -h | --help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "figures.sh: unknown argument '$1' (--help)" >&2; exit 1 ;;
   esac
@@ -412,6 +428,56 @@ section_motion() {
   done
   put docs/motion-control.md motion "$out"
   put docs/motion-control.md feed-plan "$plan"
+}
+
+section_lockstep() {
+  local out=$work/lockstep.md row glob args input tape arch failed=0
+  build_targets ncinterp
+  {
+    stamp lockstep
+    echo
+    echo "\`ncinterp cosim TAPE $lockstep_machine --arch ARCH\` without the ramp and with \`--accel $lockstep_accel\`; \`ncinterp check TAPE $lockstep_machine --arch ARCH --accel $lockstep_accel\`."
+    echo
+    echo "| input | tape arguments | blocks | serial: s, no ramp | ramped | parallel: s, no ramp | ramped | RTL = golden, same pulses and end | acceleration rule: worst of limit + allowance, serial, parallel |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---|"
+  } >"$out"
+  for row in "${lockstep_inputs[@]}"; do
+    glob=$(field "$row" 1) args=$(field "$row" 2)
+    for input in $glob; do
+      echo "figures.sh: lockstep: $input" >&2
+      tape=$input
+      if [[ $args != - ]]; then
+        tape=$work/l.tape
+        # shellcheck disable=SC2086
+        "$build/ncinterp" tape "$input" -o "$tape" $args >/dev/null 2>&1
+      fi
+      local times="" worst="" same=yes first="" ends taped="(a tape)"
+      [[ $args == - ]] || taped="\`$args\`"
+      for arch in serial parallel; do
+        # shellcheck disable=SC2086
+        "$build/ncinterp" cosim "$tape" $lockstep_machine --arch $arch --report "$work/plain.json" >/dev/null || true
+        # shellcheck disable=SC2086
+        "$build/ncinterp" cosim "$tape" $lockstep_machine --arch $arch --accel $lockstep_accel \
+          --report "$work/ramped.json" >/dev/null || true
+        # Every run ends done with the RTL matching the golden model, and all four give the
+        # same pulses per axis and direction and the same end.
+        for run in plain ramped; do
+          ends=$(jq -c '[.status, .end, .pulses, .final_position_blu]' "$work/$run.json")
+          first=${first:-$ends}
+          [[ $ends == '["match","done",'* && $ends == "$first" ]] || same=NO
+          times+=" $(jq -r '.cycles / .clock_hz' "$work/$run.json" | xargs printf '%.2f') |"
+        done
+        # shellcheck disable=SC2086
+        "$build/ncinterp" check "$tape" $lockstep_machine --arch $arch --accel $lockstep_accel \
+          --report "$work/c.json" >/dev/null || same=NO
+        worst+="${worst:+, }$(json_get "$work/c.json" acceleration.worst_of_limit_and_allowance '%.2f')"
+      done
+      [[ $same == yes ]] || failed=1
+      echo "| $(basename "$input") | $taped | $(json_get "$work/plain.json" blocks) |$times $same | $worst |" >>"$out"
+    done
+  done
+  put docs/motion-control.md lockstep "$out"
+  ((!failed)) || { echo "figures.sh: lockstep: a run differs (the table's NO rows)" >&2; exit 1; }
 }
 
 section_firststage() {

@@ -445,9 +445,12 @@ void TrajectoryChecker::check_arc_order(uint64_t cycle, const bool step[2]) {
 void TrajectoryChecker::check_acceleration(uint64_t cycle) {
   // Iteration rate over spans between pulsing iterations: r = dj / dt; its change over the
   // time between the middles of two spans is the path's acceleration in iterations per
-  // clock^2; an axis of d moves d / 2^k BLU an iteration. Each time is exact to a clock,
-  // which moves r by up to dj / dt^2: a span lasts until dt^3 limit >= 2 dj, which keeps
-  // that allowance about the limit itself.
+  // clock^2; an axis of d moves d / 2^k BLU an iteration. Each time lags the ideal one by
+  // less than a clock (a strobe comes on the first clock after the phase passes M), so a
+  // span's ideal length lies within a clock of dt, which moves r by less than
+  // dj / (dt (dt - 1)), and the middles' ideal distance is less than mid + 1/2: the rate
+  // changes by at most limit (mid + 1/2) plus those two. A span lasts until
+  // dt^3 limit >= 2 dj, which keeps that allowance about the limit itself.
   const double limit = static_cast<double>(options_.accel_step) / static_cast<double>(options_.feed_modulus);
   if (events_ > 0) {
     const double dt = static_cast<double>(cycle - event_t_[events_ - 1]);
@@ -460,7 +463,9 @@ void TrajectoryChecker::check_acceleration(uint64_t cycle) {
     const double dt1 = t1 - t0, dt2 = t2 - t1, mid = (dt1 + dt2) / 2;
     const double r1 = (j1 - j0) / dt1, r2 = (j2 - j1) / dt2;
     const double rate_accel = std::abs(r2 - r1) / mid;
-    const double allowance = ((j1 - j0) / (dt1 * dt1) + (j2 - j1) / (dt2 * dt2)) / mid;
+    // Strobes come at least 2 clocks apart (the ramp's cap), so dt >= 2.
+    const double allowance =
+        (limit / 2 + (j1 - j0) / (dt1 * std::max(dt1 - 1, 1.0)) + (j2 - j1) / (dt2 * std::max(dt2 - 1, 1.0))) / mid;
     const ProgrammedBlock& b = blocks_[cur_];
     BlockResult& r = results_[cur_];
     // An axis's share of an iteration: |d| / N (on average, for an arc).

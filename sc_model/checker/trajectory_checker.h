@@ -29,7 +29,7 @@
 //             (an axis's acceleration: that times |d| / N, N the block's iterations, on
 //             average over an arc), measured from the times of the iterations that pulse,
 //             plus the allowance of one clock per iteration time (a strobe comes on the
-//             clock after the phase passes M); an arc's own centripetal acceleration is
+//             first clock after the phase passes M); an arc's own centripetal acceleration is
 //             its feed's (the first stage's);
 //   stop      after an E-stop or a limit (--events; CheckerOptions::stop_cycle) no pulse
 //             comes after the clock of its press, and the machine shows the error with

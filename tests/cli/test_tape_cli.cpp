@@ -329,7 +329,8 @@ TEST_F(TapeCli, DashAndDevNullAreStreamed) {
 
 // Every CAM-style file a 2-axis machine can cut (examples/contours/cam/): taped with its
 // warnings (ignored words; feed moves taped as traverses; words after the end), one pass per
-// depth in the report, traverses as G00 blocks; and `check` passes on the tape.
+// depth in the report, traverses as G00 blocks; and `check` passes on the tape, also with
+// the feed ramp on both archs.
 struct CamFile {
   const char* name;
   int warnings;  // warning lines on stderr
@@ -369,6 +370,17 @@ TEST_P(TapeCliCam, TapesAndPassesTheCheck) {
   EXPECT_EQ(c["status"], "pass");
   EXPECT_LE(c["total_error"]["max_mm"].get<double>(), 0.01);
   EXPECT_EQ(c["total_error"]["rapid_blocks"].get<long>(), traverses);
+  // With the feed ramp, on both archs: every rule holds, the acceleration rule among them,
+  // and the machine ends where it ends without the ramp.
+  for (const char* arch : {"serial", "parallel"}) {
+    SCOPED_TRACE(arch);
+    ASSERT_EQ(run("check " + path("t.tape") + " --contour " + input + " --reader-cps 100000 --accel 500 --arch " +
+                  arch + " --report " + path("a.json")), 0) << stdout_ << stderr_;
+    const nlohmann::json a = json_of(path("a.json"));
+    EXPECT_EQ(a["status"], "pass");
+    EXPECT_LE(a["acceleration"]["worst_of_limit_and_allowance"].get<double>(), 1.0);
+    EXPECT_EQ(a["final_position"], c["final_position"]);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(
