@@ -65,9 +65,10 @@ std::string tape_command(const regression::Case& c, const std::string& input) {
   char buf[2048];
   std::snprintf(buf, sizeof buf,
                 "ncinterp tape %s -o %s.tape --tol %g --method %d --blu %g --width %u --arcs %s "
-                "--feed %.17g%s%s",
+                "--feed %.17g%s%s%s",
                 input.c_str(), c.name.c_str(), o.tol_mm, o.method, o.blu_mm, o.width,
                 o.arcs_circle ? "circle" : "chords", o.feed_mm_min, o.tool ? " --tool" : "",
+                o.accel_mm_s2 > 0 ? (" --accel " + std::to_string(o.accel_mm_s2)).c_str() : "",
                 o.cutter_radius_mm > 0
                     ? (" --cutter-radius " + std::to_string(o.cutter_radius_mm) + " --side " +
                        (o.side_left ? "left" : "right"))
@@ -237,6 +238,8 @@ int main(int argc, char** argv) {
     if (a.operator_events) {
       operator_events(c.check, seed, a.seconds);
       c.first_stage.tool = seed % 2 == 0;  // M03 and M05 around the cuts (the tool rule)
+      // Taped for the machine's limit, as `tape --accel` does: arcs within sqrt(A R).
+      c.first_stage.accel_mm_s2 = c.check.accel_mm_s2;
     }
     for (Arch arch : archs) {
       c.check.arch = arch;

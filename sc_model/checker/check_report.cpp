@@ -49,6 +49,7 @@ AccelSummary accel_summary(const TrajectoryChecker& c, const CheckSetup& setup, 
   for (const BlockResult& r : c.results()) {
     for (int a = 0; a < 2; ++a) s.max_mm_s2[a] = std::max(s.max_mm_s2[a], r.accel[a] * scale);
     s.worst_ratio = std::max(s.worst_ratio, r.accel_ratio);
+    s.max_centripetal_mm_s2 = std::max(s.max_centripetal_mm_s2, r.centripetal * scale);
   }
   return s;
 }
@@ -105,7 +106,8 @@ json check_report_json(const CheckOutcome& o, const ReportContext& ctx) {
     const AccelSummary a = accel_summary(c, ctx.setup, o.blu_mm);
     j["acceleration"] = {{"limit_mm_s2", a.limit_mm_s2},
                          {"max_mm_s2", {{"x", a.max_mm_s2[0]}, {"y", a.max_mm_s2[1]}}},
-                         {"worst_of_limit_and_allowance", a.worst_ratio}};
+                         {"worst_of_limit_and_allowance", a.worst_ratio},
+                         {"max_centripetal_mm_s2", a.max_centripetal_mm_s2}};
   }
   j["gap_clocks"] = c.gap_clocks();
   j["run_seconds"] = o.seconds;
@@ -228,6 +230,8 @@ std::string check_summary_text(const CheckOutcome& o, const ReportContext& ctx) 
     s << "  acceleration of the ramp: max X " << fmt("%.1f", a.max_mm_s2[0]) << ", Y "
       << fmt("%.1f", a.max_mm_s2[1]) << " mm/s^2, limit " << fmt("%g", a.limit_mm_s2)
       << " mm/s^2; worst " << fmt("%.2f", a.worst_ratio) << " of limit + allowance\n";
+    if (a.max_centripetal_mm_s2 > 0)
+      s << "  arcs: centripetal acceleration v^2/R max " << fmt("%.1f", a.max_centripetal_mm_s2) << " mm/s^2\n";
   }
   if (o.planned_seconds)
     s << "  from the first block's load: " << fmt("%.3f", playing_seconds(c, ctx.setup))

@@ -26,12 +26,14 @@ struct FeedSummary {
 };
 FeedSummary feed_summary(const TrajectoryChecker& checker);
 
-// With the feed ramp: its limit, each axis's largest acceleration measured on straight
-// blocks (mm/s^2), and the largest measured/(limit + allowance) (<= 1: the rule holds).
+// With the feed ramp: its limit, each axis's largest acceleration of the ramp measured
+// (mm/s^2), the largest measured/(limit + allowance) (<= 1: the rule holds), and the
+// largest centripetal acceleration v^2 / R measured on an arc (mm/s^2).
 struct AccelSummary {
   double limit_mm_s2 = 0.0;
   double max_mm_s2[2] = {0.0, 0.0};
   double worst_ratio = 0.0;
+  double max_centripetal_mm_s2 = 0.0;
 };
 AccelSummary accel_summary(const TrajectoryChecker& checker, const CheckSetup& setup, double blu_mm);
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -282,6 +283,7 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o, bool
   expected_dir_[1] = b.is_arc() ? b.tape.dy > 0 : b.tape.dy >= 0;
   iterations_ = 0;
   events_ = 0;
+  arc_span_from_ = pos_, arc_span_at_ = cycle;
   if (timed(b)) {
     schedule_ = schedule_of(b);
     block_iterations_ = schedule_.iterations();
@@ -439,7 +441,10 @@ void TrajectoryChecker::check_arc_order(uint64_t cycle, const bool step[2]) {
            "pulses on " + axes(step[0], step[1]) + ", the circle DDA's iteration " + std::to_string(iterations_) +
                " pulses " + axes(s.x, s.y));
   }
-  if (options_.accel_step > 0) check_acceleration(cycle);
+  if (options_.accel_step > 0) {
+    check_acceleration(cycle);
+    check_centripetal(cycle);
+  }
 }
 
 void TrajectoryChecker::check_acceleration(uint64_t cycle) {
@@ -484,6 +489,35 @@ void TrajectoryChecker::check_acceleration(uint64_t cycle) {
   }
   event_j_[events_ - 1] = iterations_;
   event_t_[events_ - 1] = cycle;
+}
+
+void TrajectoryChecker::check_centripetal(uint64_t cycle) {
+  // The speed over a span of the arc: the chord between two pulse positions over its
+  // clocks, the span long enough (kCentripetalSpan BLU, or the radius on a smaller arc) for
+  // the pulse positions' distance from the path (the bound, at each end) to matter little.
+  // Each time also lags its ideal one by less than a clock, so (chord - 2 bound) / (dt + 1)
+  // is below the path's mean speed over the span, and a failure is certain.
+  const ProgrammedBlock& b = blocks_[cur_];
+  BlockResult& r = results_[cur_];
+  const Vec2 from = to_vec(arc_span_from_), to = to_vec(pos_), start = to_vec(b.start);
+  const double chord = std::hypot(to.x - from.x, to.y - from.y);
+  const double radius = std::hypot(start.x - b.centre.x, start.y - b.centre.y);
+  if (chord < std::min(kCentripetalSpan, radius)) return;
+  const double dt = static_cast<double>(cycle - arc_span_at_);
+  arc_span_from_ = pos_, arc_span_at_ = cycle;
+  r.centripetal = std::max(r.centripetal, chord * chord / (dt * dt * radius));
+  const double slow = std::max(chord - 2 * r.bound, 0.0) / (dt + 1);
+  const double faster = static_cast<double>(options_.max_override) / kOverrideOne;
+  const double allowed = static_cast<double>(options_.accel_step) / static_cast<double>(options_.feed_modulus) *
+                         faster * faster;
+  if (slow * slow / radius > allowed) {
+    char times[32];
+    std::snprintf(times, sizeof times, "%.2f", slow * slow / radius / allowed);
+    report(Rule::kAcceleration, cycle,
+           std::string("the arc's centripetal acceleration v^2 / R is at least ") + times +
+               " times the limit: its F is too high for the limit (ncinterp tape --accel lowers an arc's "
+               "feed to sqrt(A R))");
+  }
 }
 
 void TrajectoryChecker::report_pulse_after_stop(uint64_t cycle) {

@@ -29,8 +29,11 @@
 //             (an axis's acceleration: that times |d| / N, N the block's iterations, on
 //             average over an arc), measured from the times of the iterations that pulse,
 //             plus the allowance of one clock per iteration time (a strobe comes on the
-//             first clock after the phase passes M); an arc's own centripetal acceleration is
-//             its feed's (the first stage's);
+//             first clock after the phase passes M); on an arc also its centripetal
+//             acceleration v^2 / R, v measured over spans of 64 BLU of chord (the chord
+//             less the bound at each end, over the span's clocks plus one), at most the
+//             limit times the square of the largest feed override (the first stage's arc
+//             feed, `tape --accel`, keeps v <= sqrt(A R));
 //   stop      after an E-stop or a limit (--events; CheckerOptions::stop_cycle) no pulse
 //             comes after the clock of its press, and the machine shows the error with
 //             the input's code from that clock, naming the block playing;
@@ -111,6 +114,7 @@ struct BlockResult {
   // largest ratio of a measured acceleration to the limit plus its allowance.
   double accel[2] = {0.0, 0.0};
   double accel_ratio = 0.0;
+  double centripetal = 0.0;  // arcs: the largest v^2 / R measured (BLU per clock^2)
   double ideal_clocks = 0.0;  // 1/F in clocks
   uint64_t clocks = 0;        // measured, load edge to the next load edge / busy falling
   double feed_relative_error() const {
@@ -219,6 +223,7 @@ class TrajectoryChecker {
   void check_order(uint64_t cycle);           // the schedule rule with the ramp
   void check_arc_order(uint64_t cycle, const bool step[2]);  // the schedule rule on an arc
   void check_acceleration(uint64_t cycle);    // at an iteration that pulses, with the ramp
+  void check_centripetal(uint64_t cycle);     // on an arc, at a pulse, with the ramp
   // The ramp or the operator's holds move the iterations off the documented clocks: the
   // schedule rule checks their order, the duration rule a lower bound.
   bool ramped() const { return options_.accel_step > 0 || options_.operator_holds; }
@@ -261,6 +266,11 @@ class TrajectoryChecker {
   CircleDda arc_dda_;            // an arc's DDA, replayed an iteration ahead of its pulses
   // With the ramp: the last two pulsing iterations of the block (index, cycle).
   uint64_t event_j_[2] = {0, 0}, event_t_[2] = {0, 0};
+  // The centripetal rule's span on an arc: where and when it began (start_block(): the
+  // block's start and load).
+  GridPoint arc_span_from_;
+  uint64_t arc_span_at_ = 0;
+  static constexpr double kCentripetalSpan = 64.0;  // BLU
   int events_ = 0;
   uint32_t reported_ = 0;        // rules already reported in this block (bit per rule)
 

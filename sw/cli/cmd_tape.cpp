@@ -40,7 +40,6 @@ struct TapeArgs {
   FirstStageOptions options;
   double airfoil_chord_mm = 100.0;
   double cut_z_mm = std::numeric_limits<double>::quiet_NaN();
-  double accel_mm_s2 = 0;  // > 0: plan the feed at this limit
   checker::FeedPlanOptions plan;
 };
 
@@ -139,6 +138,8 @@ int run(TapeArgs a) {
   FirstStageOptions& o = a.options;
   o.arcs_circle = a.arcs == "circle";
   o.side_left = a.side == "left";
+  // A board that ramps plans at its own limit unless --accel says otherwise.
+  if (o.accel_mm_s2 == 0 && !a.board.empty()) o.accel_mm_s2 = board::board_named(a.board).accel_mm_s2;
   validate_options(o);
   if (!a.board.empty()) {
     const std::string why = board_refusal(board::board_named(a.board), o);
@@ -172,12 +173,10 @@ int run(TapeArgs a) {
     throw std::logic_error("the tape reader read " + std::to_string(back.blocks.size()) +
                            " blocks back, " + std::to_string(program.blocks.size()) + " written");
 
-  // The feed plan on the board's machine (its 12 MHz clock, the default rapid rate); a
-  // board that ramps plans at its own limit unless --accel says otherwise.
+  // The feed plan on the board's machine (its 12 MHz clock, the default rapid rate).
   std::optional<checker::FeedPlan> plan;
-  if (a.accel_mm_s2 == 0 && !a.board.empty()) a.accel_mm_s2 = board::board_named(a.board).accel_mm_s2;
-  if (a.accel_mm_s2 > 0) {
-    a.plan.accel_mm_s2 = a.accel_mm_s2;
+  if (o.accel_mm_s2 > 0) {
+    a.plan.accel_mm_s2 = o.accel_mm_s2;
     const InterpConfig machine = a.board.empty()
                                      ? interp_config(kPlanClockHz, format)
                                      : board::board_interp_config(board::board_named(a.board), kPlanClockHz, 0);
@@ -197,6 +196,14 @@ int run(TapeArgs a) {
     (m.kind == MoveKind::kLine ? lines : arcs) += 1;
     if (m.kind == MoveKind::kLine && m.chord) ++chord_blocks;
     if (m.rapid) ++traverses;
+  }
+  // Arcs fed below --feed at sqrt(A R) (make_program()).
+  long arcs_slowed = 0;
+  GridPoint at = res.start;
+  for (const Move& m : res.moves) {
+    const double radius_mm = std::hypot(m.centre.x - at.x, m.centre.y - at.y) * o.blu_mm;
+    if (m.kind != MoveKind::kLine && arc_feed_mm_min(radius_mm, o) < o.feed_mm_min) ++arcs_slowed;
+    at = m.to;
   }
   const std::vector<PassFigures> passes = pass_figures(contour, res, o.blu_mm);
   nlohmann::json pass_list = nlohmann::json::array();
@@ -233,6 +240,7 @@ int run(TapeArgs a) {
       {"line_blocks", lines},
       {"arc_blocks", arcs},
       {"traverse_blocks", traverses},
+      {"arcs_slowed_to_accel", arcs_slowed},
       {"passes", pass_list},
       {"chords", chords},
       {"chords_per_element", per_element},
@@ -287,6 +295,9 @@ int run(TapeArgs a) {
                arcs, traverses,
                tool_blocks ? (", " + std::to_string(tool_blocks) + " tool blocks without motion").c_str() : "",
                frames.size(), dev.max_mm, o.tol_mm / 4, o.tol_mm);
+  if (arcs_slowed > 0)
+    std::fprintf(summary, "  %ld arc block(s) fed below --feed, at sqrt(A R): their centripetal acceleration "
+                 "within %g mm/s^2\n", arcs_slowed, o.accel_mm_s2);
   if (passes.size() > 1 || !std::isnan(passes.front().depth_mm))
     for (size_t p = 0; p < passes.size(); ++p)
       std::fprintf(summary, "  pass %zu at %s: %ld blocks from N%ld (%ld traverses), %.3f mm cut, %.3f mm traversed\n",
@@ -295,7 +306,7 @@ int run(TapeArgs a) {
   if (plan) {
     std::fprintf(summary, "  cycle time at %g mm/s^2 (%g MHz board): %.2f s at exact stop (as played), %.2f s "
                  "without a ramp; continuous mode (G64, junction deviation %g mm, planned only, not built): ",
-                 a.accel_mm_s2, kPlanClockHz / 1e6, plan->exact_stop_s, plan->programmed_s, a.plan.junction_deviation_mm);
+                 o.accel_mm_s2, kPlanClockHz / 1e6, plan->exact_stop_s, plan->programmed_s, a.plan.junction_deviation_mm);
     for (size_t i = 0; i < plan->continuous.size(); ++i) {
       const checker::ContinuousPlan& c = plan->continuous[i];
       std::fprintf(summary, "%s%.2f s reading %s", i ? ", " : "", c.seconds,
@@ -345,8 +356,9 @@ const CommandRegistration registration("tape", [](CLI::App& app) {
                   "laser's pierce): an M03 block that dwells, then the cuts")
       ->check(CLI::Range(0.001, 3600.0))
       ->needs("--tool");
-  cmd->add_option("--accel", args->accel_mm_s2,
-                  "plan the feed at this acceleration limit, mm/s^2: print and report the cycle time at "
+  cmd->add_option("--accel", o.accel_mm_s2,
+                  "the machine's acceleration limit, mm/s^2: arcs are fed at most sqrt(A R) (their "
+                  "centripetal acceleration within it), and the feed is planned: the cycle time at "
                   "exact stop (what the machine plays with play/check --accel) and what continuous mode "
                   "(G64, planned only) would take (docs/motion-control.md 7); default with --board: "
                   "the board's own limit (500 on the iCEBreaker)")

@@ -240,6 +240,35 @@ TEST_F(TapeCli, TheFeedPlanForetellsWhatCheckPlays) {
   EXPECT_NEAR(played["played_seconds"].get<double>(), exact, 1e-3 * exact);
 }
 
+// A small arc at a high feed is too fast for the acceleration limit (v^2 / R above it):
+// `check --accel` fails it on the centripetal rule. `tape --accel` feeds each such arc at
+// sqrt(A R), and the same program then passes; its lines keep --feed.
+TEST_F(TapeCli, AccelFeedsSmallArcsWithinTheCentripetalLimit) {
+  const std::string input = kExamples + "/cam/estlcam_bolt_holes.nc";
+  const std::string check = " --contour " + input + " --accel 500 --clock-hz 12e6 --report " + path("c.json");
+  ASSERT_EQ(run("tape " + input + " -o " + path("fast.nc") + " --arcs circle --feed 6000 --report " + path("f.json")), 0)
+      << stderr_;
+  EXPECT_EQ(json_of(path("f.json"))["arcs_slowed_to_accel"], 0);
+  EXPECT_EQ(run("check " + path("fast.nc") + check), 2) << stdout_;
+  EXPECT_NE(stdout_.find("the arc's centripetal acceleration v^2 / R is at least"), std::string::npos) << stdout_;
+  ASSERT_EQ(run("tape " + input + " -o " + path("slow.nc") + " --arcs circle --feed 6000 --accel 500 --report " +
+                path("s.json")), 0) << stderr_;
+  const nlohmann::json r = json_of(path("s.json"));
+  EXPECT_GT(r["arcs_slowed_to_accel"].get<long>(), 0);
+  EXPECT_LT(r["arcs_slowed_to_accel"].get<long>(), r["arc_blocks"].get<long>() + 1);
+  EXPECT_NE(stdout_.find("arc block(s) fed below --feed, at sqrt(A R)"), std::string::npos) << stdout_;
+  ASSERT_EQ(run("check " + path("slow.nc") + check), 0) << stdout_;
+  const nlohmann::json c = json_of(path("c.json"));
+  EXPECT_GT(c["acceleration"]["max_centripetal_mm_s2"].get<double>(), 250.0);
+  // The lines of both tapes are the same blocks.
+  const tape::Program fast = tape::parse_frames(tape::load_frames(path("fast.nc")), tape::Format{});
+  const tape::Program slow = tape::parse_frames(tape::load_frames(path("slow.nc")), tape::Format{});
+  ASSERT_EQ(fast.blocks.size(), slow.blocks.size());
+  for (size_t i = 0; i < fast.blocks.size(); ++i)
+    if (!tape::is_arc(fast.blocks[i].motion)) EXPECT_EQ(fast.blocks[i].feed, slow.blocks[i].feed) << i;
+    else EXPECT_LE(slow.blocks[i].feed, fast.blocks[i].feed) << i;
+}
+
 // --tool switches the tool around every run of cuts; --pierce-delay S puts the M03 on a
 // block that dwells S seconds at rest before the run (a G01 without motion, F = 60 / S per
 // minute). The check passes (the tool rule included) and the run is S longer per pierce.

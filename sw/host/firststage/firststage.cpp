@@ -214,6 +214,11 @@ uint64_t inverse_time_feed(double length_mm, double feed_mm_min, const tape::For
   return f < 1.0 ? 1 : static_cast<uint64_t>(f);
 }
 
+double arc_feed_mm_min(double radius_mm, const FirstStageOptions& o) {
+  if (!(o.accel_mm_s2 > 0)) return o.feed_mm_min;
+  return std::min(o.feed_mm_min, 60.0 * std::sqrt(o.accel_mm_s2 * radius_mm));
+}
+
 double move_length_mm(GridPoint from, const Move& m, double blu_mm) {
   const Vec2 a = to_vec(from), b = to_vec(m.to);
   if (m.kind == MoveKind::kLine) return norm(b - a) * blu_mm;
@@ -376,8 +381,11 @@ tape::Program make_program(const FirstStageResult& r, const FirstStageOptions& o
       b.i = m.centre.x - cur.x;
       b.j = m.centre.y - cur.y;
     }
-    // A traverse (G00) has no F: it plays at the machine's rapid rate.
-    if (!m.rapid) b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), o.feed_mm_min, format);
+    // A traverse (G00) has no F: it plays at the machine's rapid rate. An arc plays at most
+    // at sqrt(A R) under an acceleration limit.
+    const double feed = m.kind == MoveKind::kLine ? o.feed_mm_min
+                                                  : arc_feed_mm_min(std::hypot(b.i, b.j) * o.blu_mm, o);
+    if (!m.rapid) b.feed = inverse_time_feed(move_length_mm(cur, m, o.blu_mm), feed, format);
     prog.blocks.push_back(b);
     cur = m.to;
   }

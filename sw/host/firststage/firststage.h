@@ -35,6 +35,10 @@ struct FirstStageOptions {
   // laser's pierce delay): a block of M03 and a dwell, a G01 without X and Y that lasts
   // 1/F (make_program()); 0: none.
   double pierce_delay_s = 0.0;
+  // The machine's acceleration limit, mm/s^2 (0: none): an arc's feed is lowered to
+  // sqrt(A R), so that its centripetal acceleration v^2 / R stays within it (the feed ramp
+  // limits the rate along the path only; make_program(), arc_feed_mm_min()).
+  double accel_mm_s2 = 0.0;
 };
 
 enum class MoveKind { kLine, kArcCw, kArcCcw };
@@ -77,6 +81,9 @@ tape::Format tape_format(const FirstStageOptions& options);
 // (1/F = 60 s / ((2^FeedWidth - 1) 10^-FeedFracDigits), 14 us at the defaults), so it is
 // a little slower than programmed, never faster; so short a block saturates anyway.
 uint64_t inverse_time_feed(double length_mm, double feed_mm_min, const tape::Format& format);
+// The feed of an arc of radius `radius_mm`: feed_mm_min, at most 60 sqrt(A R) mm/min with an
+// acceleration limit A (options.accel_mm_s2 > 0).
+double arc_feed_mm_min(double radius_mm, const FirstStageOptions& options);
 // Length of a move in mm (arc length for arcs).
 double move_length_mm(GridPoint from, const Move& move, double blu_mm);
 

@@ -112,6 +112,7 @@ TEST_P(RampedRegression, KeepsThePulsesOnBothArchs) {
 #else
   Case c = case_of(GetParam());
   constexpr double kAccel = 500.0;
+  c.first_stage.accel_mm_s2 = kAccel;  // taped for the limit, as `tape --accel` does
   for (Arch arch : {Arch::kSerial, Arch::kParallel}) {
     SCOPED_TRACE(arch_name(arch));
     cosim::Options o;
