@@ -6,8 +6,9 @@
 // Idea: everything is built and checked in memory first (the tape text is read back with
 // the project's own tape reader, the deviation of the chord path from the contour is
 // measured), then each output is written atomically; a failure leaves no file behind.
-// With --accel it also plans the feed (sc_model/checker/feed_plan.h): the tape's cycle time
-// at exact stop on the 12 MHz board machine, and what continuous mode would take.
+// With --accel the arcs are fed at most at sqrt(A R) (their centripetal acceleration within
+// A) and the feed is planned (sc_model/checker/feed_plan.h): the tape's cycle time at exact
+// stop on the 12 MHz board machine, and what continuous mode would take.
 // Exit 0 on success; 1 on bad input (one line "FILE:LINE: what is wrong") or options.
 #include <chrono>
 #include <cmath>
@@ -138,7 +139,7 @@ int run(TapeArgs a) {
   FirstStageOptions& o = a.options;
   o.arcs_circle = a.arcs == "circle";
   o.side_left = a.side == "left";
-  // A board that ramps plans at its own limit unless --accel says otherwise.
+  // A board that ramps tapes and plans for its own limit unless --accel says otherwise.
   if (o.accel_mm_s2 == 0 && !a.board.empty()) o.accel_mm_s2 = board::board_named(a.board).accel_mm_s2;
   validate_options(o);
   if (!a.board.empty()) {
