@@ -470,7 +470,7 @@ section_lockstep() {
         # shellcheck disable=SC2086
         "$build/ncinterp" check "$tape" $lockstep_machine --arch $arch --accel $lockstep_accel \
           --report "$work/c.json" >/dev/null || same=NO
-        worst+="${worst:+, }$(json_get "$work/c.json" acceleration.worst_of_limit_and_allowance '%.2f')"
+        worst+="${worst:+, }$(json_get "$work/c.json" acceleration.worst_of_limit_and_allowance '%.3f')"
       done
       [[ $same == yes ]] || failed=1
       echo "| $(basename "$input") | $taped | $(json_get "$work/plain.json" blocks) |$times $same | $worst |" >>"$out"

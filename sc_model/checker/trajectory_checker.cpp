@@ -555,11 +555,20 @@ void TrajectoryChecker::finish(const InterpOutputs& o) {
                tape_error_message(static_cast<TapeError>(o.error_code)));
   } else if (o.paused) {
     paused_ = true;  // every rule held up to the pause; no cycle start comes to resume it
-  } else if (!o.done || loaded_ < blocks_.size()) {
-    report(Rule::kComplete, last_cycle_,
-           std::to_string(loaded_) + " of " + std::to_string(blocks_.size()) +
-               " blocks played and " + (o.done ? "done" : "no end of program") + " after " +
-               std::to_string(last_cycle_) + " clocks");
+  } else {
+    // Still blocks with their predecessor's N at the tape's end (a cut's M05, an M00 line
+    // without N) show no load of their own, and no later load passes them: the end has.
+    while (o.done && loaded_ > 0 && loaded_ < blocks_.size() && blocks_[loaded_].tape.still &&
+           blocks_[loaded_].tape.n == blocks_[loaded_ - 1].tape.n) {
+      results_[loaded_].played = results_[loaded_].finished = true;
+      results_[loaded_].load_cycle = results_[loaded_].end_cycle = last_cycle_;
+      ++loaded_;
+    }
+    if (!o.done || loaded_ < blocks_.size())
+      report(Rule::kComplete, last_cycle_,
+             std::to_string(loaded_) + " of " + std::to_string(blocks_.size()) +
+                 " blocks played and " + (o.done ? "done" : "no end of program") + " after " +
+                 std::to_string(last_cycle_) + " clocks");
   }
 }
 

@@ -359,7 +359,7 @@ TEST_F(TapeCli, DashAndDevNullAreStreamed) {
 // Every CAM-style file a 2-axis machine can cut (examples/contours/cam/): taped with its
 // warnings (ignored words; feed moves taped as traverses; words after the end), one pass per
 // depth in the report, traverses as G00 blocks; and `check` passes on the tape, also with
-// the feed ramp on both archs.
+// the feed ramp and the tool words on both archs.
 struct CamFile {
   const char* name;
   int warnings;  // warning lines on stderr
@@ -399,11 +399,13 @@ TEST_P(TapeCliCam, TapesAndPassesTheCheck) {
   EXPECT_EQ(c["status"], "pass");
   EXPECT_LE(c["total_error"]["max_mm"].get<double>(), 0.01);
   EXPECT_EQ(c["total_error"]["rapid_blocks"].get<long>(), traverses);
-  // With the feed ramp, on both archs: every rule holds, the acceleration rule among them,
-  // and the machine ends where it ends without the ramp.
+  // With the feed ramp and the tool words (--tool), on both archs: every rule holds, the
+  // acceleration and tool rules among them, and the machine ends where it ends without the
+  // ramp.
+  ASSERT_EQ(run("tape " + input + " -o " + path("tool.tape") + " --tool"), 0) << stderr_;
   for (const char* arch : {"serial", "parallel"}) {
     SCOPED_TRACE(arch);
-    ASSERT_EQ(run("check " + path("t.tape") + " --contour " + input + " --reader-cps 100000 --accel 500 --arch " +
+    ASSERT_EQ(run("check " + path("tool.tape") + " --contour " + input + " --reader-cps 100000 --accel 500 --arch " +
                   arch + " --report " + path("a.json")), 0) << stdout_ << stderr_;
     const nlohmann::json a = json_of(path("a.json"));
     EXPECT_EQ(a["status"], "pass");
