@@ -91,7 +91,7 @@ motion_machine="--clock-hz 12e6 --reader-cps 11520 --arch serial"
 plan_machine="--accel 500 --junction-deviation 0.01"
 
 # Every bundled example with the feed ramp, in lock step (section lockstep, only when named:
-# about ten minutes): "input | ncinterp tape arguments" (- for a tape), a glob expanded.
+# about three minutes): "input | ncinterp tape arguments" (- for a tape), a glob expanded.
 # Each tape plays in `cosim` on both archs without the ramp and at lockstep_accel, and
 # `check --accel` holds it to the acceleration rule on both archs.
 lockstep_inputs=(
