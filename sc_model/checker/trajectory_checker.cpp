@@ -254,6 +254,15 @@ bool TrajectoryChecker::same_n_by_pulses() const {
   return progress_[0] == std::llabs(b.tape.dx) && progress_[1] == std::llabs(b.tape.dy);
 }
 
+bool TrajectoryChecker::still_with_last_n(size_t i) const {
+  return blocks_[i].tape.still && i > 0 && blocks_[i - 1].tape.n == blocks_[i].tape.n;
+}
+
+void TrajectoryChecker::pass_over(size_t i, uint64_t cycle) {
+  results_[i].played = results_[i].finished = true;
+  results_[i].load_cycle = results_[i].end_cycle = cycle;
+}
+
 void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o, bool load_known) {
   if (loaded_ >= blocks_.size()) {
     active_ = false;
@@ -265,10 +274,8 @@ void TrajectoryChecker::start_block(uint64_t cycle, const InterpOutputs& o, bool
   // A still block (an M word alone, no pulses) with its predecessor's N (an M00 line
   // without N carries the last N) shows no load of its own: a load of another N has passed
   // it.
-  while (load_known && o.block_n != blocks_[cur_].tape.n && blocks_[cur_].tape.still && cur_ > 0 &&
-         blocks_[cur_ - 1].tape.n == blocks_[cur_].tape.n && loaded_ < blocks_.size()) {
-    results_[cur_].played = results_[cur_].finished = true;
-    results_[cur_].load_cycle = results_[cur_].end_cycle = cycle;
+  while (load_known && o.block_n != blocks_[cur_].tape.n && still_with_last_n(cur_) && loaded_ < blocks_.size()) {
+    pass_over(cur_, cycle);
     cur_ = loaded_++;
   }
   active_ = true;
@@ -558,12 +565,7 @@ void TrajectoryChecker::finish(const InterpOutputs& o) {
   } else {
     // Still blocks with their predecessor's N at the tape's end (a cut's M05, an M00 line
     // without N) show no load of their own, and no later load passes them: the end has.
-    while (o.done && loaded_ > 0 && loaded_ < blocks_.size() && blocks_[loaded_].tape.still &&
-           blocks_[loaded_].tape.n == blocks_[loaded_ - 1].tape.n) {
-      results_[loaded_].played = results_[loaded_].finished = true;
-      results_[loaded_].load_cycle = results_[loaded_].end_cycle = last_cycle_;
-      ++loaded_;
-    }
+    while (o.done && loaded_ < blocks_.size() && still_with_last_n(loaded_)) pass_over(loaded_++, last_cycle_);
     if (!o.done || loaded_ < blocks_.size())
       report(Rule::kComplete, last_cycle_,
              std::to_string(loaded_) + " of " + std::to_string(blocks_.size()) +

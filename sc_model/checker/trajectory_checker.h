@@ -232,6 +232,11 @@ class TrajectoryChecker {
   // otherwise (the ramp, holds, arcs) the playing block is over once all its pulses have
   // come, and the next pulse is the next block's.
   bool same_n_next() const;
+  // Block i is a still block (an M word alone, no pulses) with its predecessor's N: it shows
+  // no load of its own, and the next load of another N, or the program's end, passes over
+  // it (pass_over(): played and finished at that clock).
+  bool still_with_last_n(size_t i) const;
+  void pass_over(size_t i, uint64_t cycle);
   bool same_n_by_time() const;
   bool same_n_by_pulses() const;
   void report(Rule rule, uint64_t cycle, std::string detail);

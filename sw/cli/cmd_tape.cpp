@@ -198,14 +198,10 @@ int run(TapeArgs a) {
     if (m.kind == MoveKind::kLine && m.chord) ++chord_blocks;
     if (m.rapid) ++traverses;
   }
-  // Arcs fed below --feed at sqrt(A R) (make_program()).
+  // Arcs fed below --feed at sqrt(A R) (make_program(), by the radius of the arc's I, J).
   long arcs_slowed = 0;
-  GridPoint at = res.start;
-  for (const Move& m : res.moves) {
-    const double radius_mm = std::hypot(m.centre.x - at.x, m.centre.y - at.y) * o.blu_mm;
-    if (m.kind != MoveKind::kLine && arc_feed_mm_min(radius_mm, o) < o.feed_mm_min) ++arcs_slowed;
-    at = m.to;
-  }
+  for (const tape::Block& b : program.blocks)
+    if (tape::is_arc(b.motion) && arc_feed_mm_min(std::hypot(b.i, b.j) * o.blu_mm, o) < o.feed_mm_min) ++arcs_slowed;
   const std::vector<PassFigures> passes = pass_figures(contour, res, o.blu_mm);
   nlohmann::json pass_list = nlohmann::json::array();
   for (const PassFigures& f : passes)
